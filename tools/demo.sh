@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Set up, build, and run the default scenario (generated terrain, headless
+# when there is no display). Outputs: out/default/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tools/setup.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)" --target ig
+build/bin/ig run scenarios/default.json --out out/default "$@"

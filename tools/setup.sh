@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package the IG needs to build, run and test.
+# Idempotent: only missing packages are installed; uses sudo when not root.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  cmake g++ make pkg-config
+  # libraries (found by CMake)
+  libglfw3-dev libglm-dev libepoxy-dev libegl-dev libopenimageio-dev libgdal-dev
+  nlohmann-json3-dev libgtest-dev libgmock-dev
+  # headless OpenGL (Mesa llvmpipe through EGL) and the windowed path under Xvfb
+  libegl-mesa0 libgl1-mesa-dri xvfb xauth
+  # frame-time plots
+  gnuplot-nox
+  # test helpers
+  python3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+echo "setup: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
