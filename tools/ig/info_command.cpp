@@ -1,0 +1,146 @@
+// `ig info FILE [options]`: load a DEM and print what the IG sees as JSON.
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <cstdio>
+#include <cmath>
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ig/commands.h"
+#include "terrain/dem_loader.h"
+
+namespace ig::app {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: ig info FILE [--encoding auto|terrain-rgb|png16|gdal] [--scale S] [--offset O]\n"
+    "                    [--spacing M]\n"
+    "Loads a DEM (GeoTIFF, SRTM .hgt, USGS DEM, ESRI ASCII grid, any single-band GDAL\n"
+    "raster, 16-bit PNG or terrain-RGB PNG) and prints one JSON object: size, spacing\n"
+    "in metres, min/max/mean height, filled nodata samples, CRS and corner coordinates.\n"
+    "  --encoding E  how to decode: auto (default; PNGs by their layout, else GDAL),\n"
+    "                png16 (metres = value * scale + offset), terrain-rgb\n"
+    "                (metres = -10000 + (R*65536 + G*256 + B) * 0.1), gdal\n"
+    "  --scale S     png16 scale (default 1)\n"
+    "  --offset O    png16 offset in metres (default 0)\n"
+    "  --spacing M   sample spacing in metres (images have none; default 1)\n"
+    "Exit status: 0 ok, 1 the file could not be loaded, 2 bad arguments.\n";
+
+struct UsageError {
+  std::string message;
+};
+
+double parse_number(const std::string& option, const std::string& text) {
+  double v = 0.0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (!text.empty() && *first == '+') ++first;
+  const auto res = std::from_chars(first, last, v);
+  if (text.empty() || res.ec != std::errc() || res.ptr != last || !std::isfinite(v))
+    throw UsageError{option + " needs a number, got '" + text + "'"};
+  return v;
+}
+
+// libpng (under OpenImageIO) prints its own "libpng error: ..." lines for a
+// corrupt PNG; `ig info` promises exactly one error line, so file descriptor
+// 2 points at /dev/null while the DEM loads (the loader reports every
+// failure through DemError anyway). Only the CLI does this, never the library.
+class SilenceStderr {
+ public:
+  SilenceStderr() {
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null_fd = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null_fd >= 0) ::dup2(null_fd, 2);
+    if (null_fd >= 0) ::close(null_fd);
+  }
+  ~SilenceStderr() {
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      ::dup2(saved_, 2);
+      ::close(saved_);
+    }
+  }
+  SilenceStderr(const SilenceStderr&) = delete;
+  SilenceStderr& operator=(const SilenceStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+}  // namespace
+
+int run_info_command(const std::vector<std::string>& args) {
+  std::optional<std::string> file;
+  terrain::DemLoadOptions opts;
+  try {
+    for (std::size_t k = 0; k < args.size(); ++k) {
+      const std::string& a = args[k];
+      if (a == "--help" || a == "-h") {
+        std::cout << kUsage;
+        return 0;
+      }
+      if (a.rfind("--", 0) == 0) {
+        std::string name = a, value;
+        bool has_value = false;
+        if (const auto eq = a.find('='); eq != std::string::npos) {
+          name = a.substr(0, eq);
+          value = a.substr(eq + 1);
+          has_value = true;
+        }
+        if (name != "--encoding" && name != "--scale" && name != "--offset" &&
+            name != "--spacing")
+          throw UsageError{"unknown option " + name + " (try ig info --help)"};
+        if (!has_value) {
+          if (k + 1 >= args.size()) throw UsageError{name + " needs a value"};
+          value = args[++k];
+        }
+        if (name == "--encoding") {
+          if (value != "auto" && value != "terrain-rgb" && value != "png16" && value != "gdal")
+            throw UsageError{"--encoding must be auto, terrain-rgb, png16 or gdal, got '" +
+                             value + "'"};
+          opts.encoding = value;
+        } else if (name == "--scale") {
+          opts.scale = parse_number(name, value);
+        } else if (name == "--offset") {
+          opts.offset = parse_number(name, value);
+        } else {
+          const double s = parse_number(name, value);
+          if (!(s > 0)) throw UsageError{"--spacing must be a positive number of metres"};
+          opts.spacing_m = s;
+        }
+        continue;
+      }
+      if (file) throw UsageError{"more than one FILE given ('" + *file + "', '" + a + "')"};
+      file = a;
+    }
+    if (!file) throw UsageError{"missing FILE (usage: ig info FILE [options]; see --help)"};
+  } catch (const UsageError& e) {
+    std::cerr << "ig info: " << e.message << "\n";
+    return 2;
+  }
+
+  try {
+    terrain::Heightfield hf;
+    {
+      SilenceStderr quiet;
+      hf = terrain::load_dem(*file, opts);
+    }
+    std::cout << terrain::dem_info_json(hf) << "\n";
+    std::cout.flush();
+    return std::cout ? 0 : 1;
+  } catch (const std::exception& e) {  // DemError, and e.g. std::bad_alloc
+    std::cerr << "ig info: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace ig::app

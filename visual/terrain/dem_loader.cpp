@@ -1,0 +1,622 @@
+#include "terrain/dem_loader.h"
+
+#include <gdal.h>
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <ogr_srs_api.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cctype>
+#include <cerrno>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <numbers>
+#include <string_view>
+#include <vector>
+
+namespace ig::terrain {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::int64_t kMaxSide = 65537;
+constexpr std::int64_t kMaxSamples = std::int64_t{1} << 30;
+constexpr std::uintmax_t kHgt1201Bytes = 2ull * 1201 * 1201;  // 2 884 802
+constexpr std::uintmax_t kHgt3601Bytes = 2ull * 3601 * 3601;  // 25 934 402
+constexpr float kSrtmVoid = -32768.0f;
+
+// Messages are one line: GDAL and OpenImageIO sometimes return several.
+std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  while (!s.empty() && (s.back() == ' ' || s.back() == '.')) s.pop_back();
+  std::size_t start = 0;
+  while (start < s.size() && s[start] == ' ') ++start;
+  return s.substr(start);
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string size_text(std::int64_t w, std::int64_t h) {
+  return std::to_string(w) + "x" + std::to_string(h);
+}
+
+void check_size(const std::string& path, std::int64_t w, std::int64_t h) {
+  if (w < 2 || h < 2)
+    throw DemError(path, "raster size " + size_text(w, h) +
+                             " is too small (a DEM needs at least 2x2 samples)");
+  if (w > kMaxSide || h > kMaxSide || w * h > kMaxSamples)
+    throw DemError(path, "raster size " + size_text(w, h) +
+                             " is too large (limit 65537 per side and 2^30 samples)");
+}
+
+// ---------------------------------------------------------------- voids ---
+
+// Fills void samples (valid[k] == 0) inward from the edges of each void,
+// one layer at a time: every void sample with at least one valid 8-neighbour
+// takes the mean of those neighbours, then they all count as valid for the
+// next layer. Deterministic and O(samples). Returns the number filled.
+std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state, int w,
+                        int ht) {
+  // state: 0 void, 1 valid, 2 void already queued.
+  std::int64_t voids = 0;
+  for (std::uint8_t s : state) voids += (s == 0);
+  if (voids == 0) return 0;
+
+  auto for_neighbours = [&](std::uint32_t k, auto&& fn) {
+    const int i = int(k % std::uint32_t(w)), j = int(k / std::uint32_t(w));
+    for (int dj = -1; dj <= 1; ++dj) {
+      const int jj = j + dj;
+      if (jj < 0 || jj >= ht) continue;
+      for (int di = -1; di <= 1; ++di) {
+        const int ii = i + di;
+        if ((di == 0 && dj == 0) || ii < 0 || ii >= w) continue;
+        fn(std::uint32_t(jj) * std::uint32_t(w) + std::uint32_t(ii));
+      }
+    }
+  };
+
+  std::vector<std::uint32_t> frontier, next;
+  for (std::uint32_t k = 0; k < state.size(); ++k) {
+    if (state[k] != 0) continue;
+    bool near_valid = false;
+    for_neighbours(k, [&](std::uint32_t n) { near_valid |= (state[n] == 1); });
+    if (near_valid) {
+      state[k] = 2;
+      frontier.push_back(k);
+    }
+  }
+  std::vector<float> values;
+  while (!frontier.empty()) {
+    values.resize(frontier.size());
+    for (std::size_t f = 0; f < frontier.size(); ++f) {
+      double sum = 0.0;
+      int count = 0;
+      for_neighbours(frontier[f], [&](std::uint32_t n) {
+        if (state[n] == 1) {
+          sum += h[n];
+          ++count;
+        }
+      });
+      values[f] = float(sum / std::max(count, 1));
+    }
+    next.clear();
+    for (std::size_t f = 0; f < frontier.size(); ++f) {
+      h[frontier[f]] = values[f];
+      state[frontier[f]] = 1;
+    }
+    for (std::uint32_t k : frontier)
+      for_neighbours(k, [&](std::uint32_t n) {
+        if (state[n] == 0) {
+          state[n] = 2;
+          next.push_back(n);
+        }
+      });
+    frontier.swap(next);
+  }
+  return voids;
+}
+
+void flip_rows(std::vector<float>& h, int w, int ht) {
+  for (int j = 0; j < ht / 2; ++j) {
+    auto a = h.begin() + std::ptrdiff_t(j) * w;
+    auto b = h.begin() + std::ptrdiff_t(ht - 1 - j) * w;
+    std::swap_ranges(a, a + w, b);
+  }
+}
+
+// ----------------------------------------------------------------- GDAL ---
+
+void gdal_register_once() {
+  static std::once_flag once;
+  std::call_once(once, [] { GDALAllRegister(); });
+}
+
+// Silences GDAL's stderr output on this thread for the scope; failures are
+// reported through CPLGetLastErrorMsg() instead.
+struct QuietGdal {
+  QuietGdal() {
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    CPLErrorReset();
+  }
+  ~QuietGdal() { CPLPopErrorHandler(); }
+  QuietGdal(const QuietGdal&) = delete;
+  QuietGdal& operator=(const QuietGdal&) = delete;
+};
+
+std::string gdal_last_error() { return one_line(CPLGetLastErrorMsg()); }
+
+// GDAL messages often start with the file name ("x.tif: ...", "x.tif, band
+// 1: ..."); ours already do, so drop that prefix.
+std::string without_path(std::string msg, const std::string& path) {
+  auto trim_front = [&msg] {
+    std::size_t k = 0;
+    while (k < msg.size() && std::strchr(" ,:'`\"", msg[k])) ++k;
+    msg.erase(0, k);
+  };
+  trim_front();
+  for (const std::string& p : {path, fs::path(path).filename().string()}) {
+    if (!p.empty() && msg.compare(0, p.size(), p) == 0) {
+      msg.erase(0, p.size());
+      trim_front();
+      break;
+    }
+  }
+  return msg;
+}
+
+struct GdalCloser {
+  void operator()(void* ds) const {
+    if (ds) GDALClose(static_cast<GDALDatasetH>(ds));
+  }
+};
+
+// Metres per vertical unit of the band ("m", "ft", ...); 1 when unknown.
+double vertical_unit_to_metres(const char* unit) {
+  if (!unit) return 1.0;
+  const std::string u = lower(unit);
+  if (u == "ft" || u == "foot" || u == "feet" || u == "international foot") return 0.3048;
+  if (u == "ftus" || u == "us survey foot" || u == "us-ft" || u == "foot_us")
+    return 1200.0 / 3937.0;
+  return 1.0;
+}
+
+std::string crs_short_name(OGRSpatialReferenceH srs) {
+  const char* auth = OSRGetAuthorityName(srs, nullptr);
+  const char* code = OSRGetAuthorityCode(srs, nullptr);
+  if (auth && code && *auth && *code) return std::string(auth) + ":" + code;
+  if (OGRSpatialReferenceH clone = OSRClone(srs)) {
+    std::string name;
+    if (OSRAutoIdentifyEPSG(clone) == OGRERR_NONE) {
+      auth = OSRGetAuthorityName(clone, nullptr);
+      code = OSRGetAuthorityCode(clone, nullptr);
+      if (auth && code && *auth && *code) name = std::string(auth) + ":" + code;
+    }
+    OSRDestroySpatialReference(clone);
+    if (!name.empty()) return name;
+  }
+  const char* n = OSRGetName(srs);
+  return n ? std::string(n) : std::string();
+}
+
+Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
+                           bool is_hgt) {
+  gdal_register_once();
+  QuietGdal quiet;
+
+  std::unique_ptr<void, GdalCloser> ds(GDALOpenEx(
+      path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR, nullptr,
+      nullptr, nullptr));
+  if (!ds) {
+    const std::string msg = without_path(gdal_last_error(), path);
+    if (is_hgt)
+      throw DemError(path, "not a recognised raster format (SRTM .hgt files must be named "
+                           "after their tile, e.g. N44W072.hgt)");
+    if (msg.empty() || msg.find("not recognized as a supported file format") != std::string::npos)
+      throw DemError(path, "not a recognised raster format");
+    // A driver claimed the file but could not open it (e.g. a TIFF cut short).
+    throw DemError(path, "cannot open (truncated or corrupt file?): " + msg);
+  }
+  GDALDatasetH h = ds.get();
+
+  const int bands = GDALGetRasterCount(h);
+  if (bands != 1)
+    throw DemError(path, "has " + std::to_string(bands) +
+                             " raster bands; a DEM must have exactly one");
+  const std::int64_t w64 = GDALGetRasterXSize(h), h64 = GDALGetRasterYSize(h);
+  check_size(path, w64, h64);
+  const int w = int(w64), ht = int(h64);
+  GDALRasterBandH band = GDALGetRasterBand(h, 1);
+  if (GDALDataTypeIsComplex(GDALGetRasterDataType(band)))
+    throw DemError(path, "complex-valued raster is not a DEM");
+
+  Heightfield hf;
+  hf.width = w;
+  hf.height = ht;
+  hf.source = path;
+  const std::size_t n = std::size_t(w) * std::size_t(ht);
+  try {
+    hf.heights.resize(n);
+  } catch (const std::bad_alloc&) {
+    throw DemError(path, "out of memory for a " + size_text(w, ht) + " grid");
+  }
+
+  CPLErrorReset();
+  const CPLErr err = GDALRasterIO(band, GF_Read, 0, 0, w, ht, hf.heights.data(), w, ht,
+                                  GDT_Float32, 0, 0);
+  if (err != CE_None) {
+    const std::string msg = without_path(gdal_last_error(), path);
+    throw DemError(path, "read failed (truncated or corrupt file?)" +
+                             (msg.empty() ? std::string() : ": " + msg));
+  }
+  flip_rows(hf.heights, w, ht);
+
+  // Voids: band nodata, non-finite, SRTM void.
+  int has_nodata = 0;
+  const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+  const bool nodata_is_nan = has_nodata && std::isnan(nodata);
+  const bool nodata_fits = has_nodata && !nodata_is_nan && std::fabs(nodata) <= FLT_MAX;
+  const float nodata_f = nodata_fits ? float(nodata) : kSrtmVoid;
+  std::vector<std::uint8_t> state(n);
+  std::int64_t valid = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const float v = hf.heights[k];
+    const bool ok = std::isfinite(v) && v != kSrtmVoid && v != nodata_f;
+    state[k] = ok;
+    valid += ok;
+  }
+  if (valid == 0)
+    throw DemError(path, "all " + std::to_string(n) + " samples are nodata");
+
+  // Band scale/offset and vertical units (feet) to metres, valid samples only.
+  int has_scale = 0, has_offset = 0;
+  double vscale = GDALGetRasterScale(band, &has_scale);
+  double voffset = GDALGetRasterOffset(band, &has_offset);
+  if (!has_scale) vscale = 1.0;
+  if (!has_offset) voffset = 0.0;
+  const double unit = vertical_unit_to_metres(GDALGetRasterUnitType(band));
+  if (vscale != 1.0 || voffset != 0.0 || unit != 1.0) {
+    for (std::size_t k = 0; k < n; ++k)
+      if (state[k]) hf.heights[k] = float((hf.heights[k] * vscale + voffset) * unit);
+  }
+  hf.nodata_count = fill_voids(hf.heights, state, w, ht);
+
+  // Georeferencing and spacing.
+  std::array<double, 6> gt{};
+  const bool has_gt = GDALGetGeoTransform(h, gt.data()) == CE_None;
+  OGRSpatialReferenceH srs = GDALGetSpatialRef(h);
+  if (has_gt) {
+    GeoReference geo;
+    if (srs) {
+      char* wkt = nullptr;
+      if (OSRExportToWkt(srs, &wkt) == OGRERR_NONE && wkt) geo.crs_wkt = wkt;
+      CPLFree(wkt);
+      geo.crs_name = crs_short_name(srs);
+      geo.geographic = OSRIsGeographic(srs) != 0;
+    }
+    // GDAL's geotransform maps pixel CORNERS of north-up rows; ours maps
+    // sample centres of south-up rows (j = height - 1 - row).
+    geo.grid_to_crs = {gt[0] + 0.5 * gt[1] + (ht - 0.5) * gt[2], gt[1], -gt[2],
+                       gt[3] + 0.5 * gt[4] + (ht - 0.5) * gt[5], gt[4], -gt[5]};
+
+    double east_per_unit = 1.0, north_per_unit = 1.0;  // metres per CRS unit
+    if (srs && geo.geographic) {
+      const double centre_lat = gt[3] + 0.5 * w * gt[4] + 0.5 * ht * gt[5];
+      if (!(std::fabs(centre_lat) <= 90.0))
+        throw DemError(path, "geographic georeferencing puts the centre at latitude " +
+                                 std::to_string(centre_lat) + ", outside -90..90");
+      OGRErr e1 = OGRERR_NONE, e2 = OGRERR_NONE;
+      double a = OSRGetSemiMajor(srs, &e1);
+      double inv_f = OSRGetInvFlattening(srs, &e2);
+      if (e1 != OGRERR_NONE || !(a > 0)) a = 6378137.0;
+      if (e2 != OGRERR_NONE || !(inv_f >= 0)) inv_f = 298.257223563;
+      double unit_rad = OSRGetAngularUnits(srs, nullptr);
+      if (!(unit_rad > 0)) unit_rad = std::numbers::pi / 180.0;
+      const MetresPerAngle mpa = metres_per_angle(centre_lat, a, inv_f, unit_rad);
+      east_per_unit = mpa.east;
+      north_per_unit = mpa.north;
+    } else if (srs) {
+      double lin = OSRGetLinearUnits(srs, nullptr);
+      if (!(lin > 0)) lin = 1.0;
+      east_per_unit = north_per_unit = lin;
+    }
+    hf.spacing_x_m = std::hypot(gt[1] * east_per_unit, gt[4] * north_per_unit);
+    hf.spacing_y_m = std::hypot(gt[2] * east_per_unit, gt[5] * north_per_unit);
+    if (!(hf.spacing_x_m > 0) || !(hf.spacing_y_m > 0) || !std::isfinite(hf.spacing_x_m) ||
+        !std::isfinite(hf.spacing_y_m))
+      throw DemError(path, "invalid pixel size in the georeferencing");
+    hf.georef = std::move(geo);
+  }
+  if (opts.spacing_m) hf.spacing_x_m = hf.spacing_y_m = *opts.spacing_m;
+  hf.finalize_stats();
+  return hf;
+}
+
+// --------------------------------------------------------- OpenImageIO ---
+
+const char* kImageEncodings =
+    "supported image encodings: png16 (16-bit grayscale), terrain-rgb (8-bit RGB/RGBA "
+    "Mapbox terrain-RGB); other rasters load through GDAL";
+
+Heightfield load_with_oiio(const std::string& path, const DemLoadOptions& opts,
+                           std::string encoding) {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);  // never premultiply RGB by alpha
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) {
+    const std::string msg = one_line(OIIO::geterror());
+    throw DemError(path, "not a recognised raster format" +
+                             (msg.empty() ? std::string() : " (" + msg + ")"));
+  }
+  const OIIO::ImageSpec spec = in->spec();
+  const int nch = spec.nchannels;
+  const OIIO::TypeDesc fmt = spec.format;
+  const bool is16 = fmt == OIIO::TypeDesc::UINT16 || fmt == OIIO::TypeDesc::INT16;
+  const bool is8 = fmt == OIIO::TypeDesc::UINT8;
+  const std::string layout = std::to_string(nch) + "-channel " + std::string(fmt.c_str());
+
+  if (encoding == "auto") {
+    if (is16 && (nch == 1 || nch == 2))
+      encoding = "png16";
+    else if (is8 && (nch == 3 || nch == 4))
+      encoding = "terrain-rgb";
+    else if (is8 && (nch == 1 || nch == 2))
+      throw DemError(path, "8-bit grayscale image is not a DEM encoding (" +
+                               std::string(kImageEncodings) + ")");
+    else
+      throw DemError(path, "unsupported image layout " + layout + " (" + kImageEncodings +
+                               ")");
+  } else if (encoding == "png16" && !is16) {
+    throw DemError(path, "png16 needs a 16-bit grayscale image, this is " + layout);
+  } else if (encoding == "terrain-rgb" && !(is8 && nch >= 3)) {
+    throw DemError(path, "terrain-rgb needs an 8-bit RGB or RGBA image, this is " + layout);
+  }
+  if (spec.depth > 1) throw DemError(path, "volume images are not DEMs");
+  check_size(path, spec.width, spec.height);
+  const int w = spec.width, ht = spec.height;
+  const std::size_t n = std::size_t(w) * std::size_t(ht);
+
+  Heightfield hf;
+  hf.width = w;
+  hf.height = ht;
+  hf.source = path;
+  const double spacing = opts.spacing_m.value_or(1.0);
+  hf.spacing_x_m = hf.spacing_y_m = spacing;
+  try {
+    hf.heights.resize(n);
+    if (encoding == "png16") {
+      std::vector<std::uint16_t> raw(n);
+      if (!in->read_image(0, 0, 0, 1, fmt, raw.data())) {
+        const std::string msg = one_line(in->geterror());
+        throw DemError(path, "read failed (truncated or corrupt image?)" +
+                                 (msg.empty() ? std::string() : ": " + msg));
+      }
+      const bool is_signed = fmt == OIIO::TypeDesc::INT16;
+      for (int r = 0; r < ht; ++r) {
+        const std::uint16_t* src = raw.data() + std::size_t(r) * w;
+        float* dst = hf.heights.data() + std::size_t(ht - 1 - r) * w;
+        for (int i = 0; i < w; ++i) {
+          const double v = is_signed ? double(std::int16_t(src[i])) : double(src[i]);
+          dst[i] = float(v * opts.scale + opts.offset);
+        }
+      }
+    } else {  // terrain-rgb
+      std::vector<std::uint8_t> raw(n * 3);
+      if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, raw.data())) {
+        const std::string msg = one_line(in->geterror());
+        throw DemError(path, "read failed (truncated or corrupt image?)" +
+                                 (msg.empty() ? std::string() : ": " + msg));
+      }
+      for (int r = 0; r < ht; ++r) {
+        const std::uint8_t* src = raw.data() + std::size_t(r) * w * 3;
+        float* dst = hf.heights.data() + std::size_t(ht - 1 - r) * w;
+        for (int i = 0; i < w; ++i) {
+          const std::uint32_t code = (std::uint32_t(src[3 * i]) << 16) |
+                                     (std::uint32_t(src[3 * i + 1]) << 8) | src[3 * i + 2];
+          dst[i] = float(-10000.0 + double(code) * 0.1);
+        }
+      }
+    }
+  } catch (const std::bad_alloc&) {
+    throw DemError(path, "out of memory for a " + size_text(w, ht) + " grid");
+  }
+  for (float v : hf.heights)
+    if (!std::isfinite(v))
+      throw DemError(path, "decoded heights are not finite (check --scale / --offset)");
+  hf.finalize_stats();
+  return hf;
+}
+
+// ----------------------------------------------------------------- JSON ---
+
+void json_string(std::string& out, std::string_view s) {
+  out += '"';
+  for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20) {
+      static const char* hex = "0123456789abcdef";
+      out += "\\u00";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  out += '"';
+}
+
+template <typename T>
+void json_number(std::string& out, T v) {
+  if (!std::isfinite(double(v))) {
+    out += "null";
+    return;
+  }
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, res.ptr);
+}
+
+void json_point(std::string& out, double x, double y) {
+  out += '[';
+  json_number(out, x);
+  out += ", ";
+  json_number(out, y);
+  out += ']';
+}
+
+}  // namespace
+
+DemError::DemError(const std::string& path, const std::string& reason)
+    : std::runtime_error(one_line(path + ": " + reason)), path_(path), reason_(reason) {}
+
+MetresPerAngle metres_per_angle(double lat_deg, double a, double inv_f, double unit_rad) {
+  const double f = inv_f > 0 ? 1.0 / inv_f : 0.0;
+  const double e2 = f * (2.0 - f);
+  const double phi = lat_deg * (std::numbers::pi / 180.0);
+  const double s = std::sin(phi);
+  const double w2 = 1.0 - e2 * s * s;
+  const double meridian_radius = a * (1.0 - e2) / (w2 * std::sqrt(w2));
+  const double prime_vertical_radius = a / std::sqrt(w2);
+  return {meridian_radius * unit_rad, prime_vertical_radius * std::cos(phi) * unit_rad};
+}
+
+Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
+  const std::string& enc = opts.encoding;
+  if (enc != "auto" && enc != "terrain-rgb" && enc != "png16" && enc != "gdal")
+    throw DemError(path, "unknown encoding '" + enc +
+                             "' (expected auto, terrain-rgb, png16 or gdal)");
+  if (!std::isfinite(opts.scale) || !std::isfinite(opts.offset))
+    throw DemError(path, "scale and offset must be finite numbers");
+  if (opts.spacing_m && !(*opts.spacing_m > 0 && std::isfinite(*opts.spacing_m)))
+    throw DemError(path, "spacing must be a positive number of metres");
+
+  // File-system checks first, so the common mistakes read plainly.
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (path.empty() || st.type() == fs::file_type::not_found)
+    throw DemError(path, "no such file");
+  if (ec) throw DemError(path, "cannot access: " + ec.message());
+  if (st.type() == fs::file_type::directory)
+    throw DemError(path, "is a directory, not a DEM file");
+  if (st.type() != fs::file_type::regular)
+    throw DemError(path, "not a regular file");
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (ec) throw DemError(path, "cannot access: " + ec.message());
+  if (bytes == 0) throw DemError(path, "empty file (0 bytes)");
+
+  unsigned char magic[8] = {};
+  {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw DemError(path, std::string("cannot open for reading: ") + std::strerror(errno));
+    f.read(reinterpret_cast<char*>(magic), sizeof magic);
+  }
+  static const unsigned char kPngMagic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  const bool png_signature = bytes >= 8 && std::memcmp(magic, kPngMagic, 8) == 0;
+  const std::string ext = lower(fs::path(path).extension().string());
+  const bool is_hgt = ext == ".hgt";
+
+  if (enc == "png16" || enc == "terrain-rgb") return load_with_oiio(path, opts, enc);
+  if (enc == "auto" && (png_signature || ext == ".png"))
+    return load_with_oiio(path, opts, "auto");
+
+  if (is_hgt && bytes != kHgt1201Bytes && bytes != kHgt3601Bytes)
+    throw DemError(path, "truncated or wrong-size SRTM .hgt: " + std::to_string(bytes) +
+                             " bytes, expected 2884802 (1201x1201) or 25934402 (3601x3601)");
+  return load_with_gdal(path, opts, is_hgt);
+}
+
+std::string dem_info_json(const Heightfield& hf) {
+  // One line, JSON with ", " / ": " separators (as Python's json.dumps).
+  std::string o = "{";
+  auto key = [&o](const char* name) {
+    if (o.size() > 1) o += ", ";
+    json_string(o, name);
+    o += ": ";
+  };
+  key("width");
+  o += std::to_string(hf.width);
+  key("height");
+  o += std::to_string(hf.height);
+  key("spacing_x_m");
+  json_number(o, hf.spacing_x_m);
+  key("spacing_y_m");
+  json_number(o, hf.spacing_y_m);
+  key("min_m");
+  json_number(o, hf.min_m);
+  key("max_m");
+  json_number(o, hf.max_m);
+  key("mean_m");
+  json_number(o, hf.mean_m);
+  key("nodata_count");
+  o += std::to_string(hf.nodata_count);
+  key("crs");
+  if (hf.georef && !hf.georef->crs_name.empty())
+    json_string(o, hf.georef->crs_name);
+  else
+    o += "null";
+  key("geographic");
+  o += (hf.georef && hf.georef->geographic) ? "true" : "false";
+  key("source");
+  json_string(o, hf.source);
+  if (hf.georef) {
+    const auto& g = hf.georef->grid_to_crs;
+    auto at = [&g](double i, double j) {
+      return std::array<double, 2>{g[0] + i * g[1] + j * g[2], g[3] + i * g[4] + j * g[5]};
+    };
+    const double ie = hf.width - 1, je = hf.height - 1;
+    // Corner sample centres, [x, y] in the DEM's CRS (lon, lat for geographic).
+    key("corners");
+    const std::array<std::pair<const char*, std::array<double, 2>>, 4> corners = {
+        {{"sw", at(0, 0)}, {"se", at(ie, 0)}, {"nw", at(0, je)}, {"ne", at(ie, je)}}};
+    o += '{';
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      if (k) o += ", ";
+      json_string(o, corners[k].first);
+      o += ": ";
+      json_point(o, corners[k].second[0], corners[k].second[1]);
+    }
+    o += '}';
+    // Outer pixel edges: half a sample beyond the corner sample centres.
+    double west = 1e300, east = -1e300, south = 1e300, north = -1e300;
+    for (double i : {-0.5, ie + 0.5})
+      for (double j : {-0.5, je + 0.5}) {
+        const auto p = at(i, j);
+        west = std::min(west, p[0]);
+        east = std::max(east, p[0]);
+        south = std::min(south, p[1]);
+        north = std::max(north, p[1]);
+      }
+    key("bounds");
+    o += "{\"west\": ";
+    json_number(o, west);
+    o += ", \"south\": ";
+    json_number(o, south);
+    o += ", \"east\": ";
+    json_number(o, east);
+    o += ", \"north\": ";
+    json_number(o, north);
+    o += '}';
+  }
+  o += '}';
+  return o;
+}
+
+}  // namespace ig::terrain

@@ -1,0 +1,80 @@
+#pragma once
+// Loading real elevation data (DEMs) into a Heightfield.
+//
+// Two back ends:
+//  * GDAL, for every georeferenced single-band raster GDAL opens: GeoTIFF
+//    (int16 / uint16 / float32 ...), SRTM .hgt, USGS ASCII DEM, ESRI ASCII
+//    grid (.asc), ... Spacing and georeferencing come from the file.
+//  * OpenImageIO, for DEMs packed into ordinary PNG images: 16-bit grayscale
+//    ("png16": metres = value * scale + offset) and Mapbox terrain-RGB
+//    ("terrain-rgb": metres = -10000 + (R*65536 + G*256 + B) * 0.1). Images
+//    carry no spacing: it is DemLoadOptions::spacing_m, else 1 m, and the
+//    result has no georef.
+//
+// Rows are flipped on load so row 0 is the SOUTH edge (files store north
+// first). Nodata / void samples are filled (see load_dem) and counted.
+// Every failure is a DemError with a one-line "<path>: <reason>" message; a
+// bad file never crashes the loader and never yields a partial grid.
+// See docs/terrain-data.md.
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "terrain/heightfield.h"
+
+namespace ig::terrain {
+
+struct DemError : std::runtime_error {
+  DemError(const std::string& path, const std::string& reason);
+  const std::string& path() const { return path_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string path_;
+  std::string reason_;
+};
+
+struct DemLoadOptions {
+  // "auto": PNG files (by signature) go to png16 (1-channel 16-bit) or
+  // terrain-rgb (8-bit RGB/RGBA); everything else goes to GDAL.
+  // "terrain-rgb" / "png16": force that image decoding (OpenImageIO).
+  // "gdal": force GDAL.
+  std::string encoding = "auto";
+  double scale = 1.0;   // png16 only: metres = value * scale + offset
+  double offset = 0.0;  // png16 only
+  // Overrides the sample spacing (both axes, metres) for any format. Images
+  // need it to have real-world spacing; they default to 1 m.
+  std::optional<double> spacing_m;
+};
+
+// Loads a DEM; throws DemError on any failure (message "<path>: <reason>").
+//
+// Nodata: a sample is void when it equals the band's nodata value, is NaN or
+// +-Inf, or is -32768 (the SRTM void marker; no real elevation is that low).
+// Voids are filled inward from their edges, layer by layer: each void sample
+// takes the mean of the already-valid samples among its 8 neighbours. The
+// number of filled samples is Heightfield::nodata_count. A grid with no valid
+// sample at all is an error.
+Heightfield load_dem(const std::string& path, const DemLoadOptions& opts = {});
+
+// One JSON object (single line) describing a loaded heightfield: width,
+// height, spacing_x_m, spacing_y_m, min_m, max_m, mean_m, nodata_count, crs
+// (short name or null), geographic, source, and for georeferenced grids
+// "corners" ({"sw","se","nw","ne"}: [x, y] CRS coordinates of the corner
+// sample centres) and "bounds" (outer pixel edges: west, south, east, north).
+std::string dem_info_json(const Heightfield& hf);
+
+// Metres per unit of latitude / longitude at geodetic latitude lat_deg on an
+// ellipsoid (semi-major axis a, inverse flattening inv_f; inv_f = 0 is a
+// sphere), for an angular unit of unit_rad radians (pi/180 for degrees).
+// Used for the ground spacing of geographic DEMs; exposed for tests.
+struct MetresPerAngle {
+  double north;  // along the meridian
+  double east;   // along the parallel
+};
+MetresPerAngle metres_per_angle(double lat_deg, double a = 6378137.0,
+                                double inv_f = 298.257223563,
+                                double unit_rad = 0.017453292519943295);
+
+}  // namespace ig::terrain

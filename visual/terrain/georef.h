@@ -1,0 +1,18 @@
+#pragma once
+// Placing geodetic (WGS84 lat/lon) positions on a georeferenced heightfield.
+
+#include <optional>
+
+#include <glm/vec2.hpp>
+
+#include "terrain/heightfield.h"
+
+namespace ig::terrain {
+
+// Local x/y metres (see heightfield.h) of a WGS84 latitude/longitude, through
+// the DEM's own CRS and grid. nullopt when the heightfield has no georeference
+// or the transform fails. Local = grid index * spacing, so geographic DEMs use
+// the grid's own (centre-latitude) spacing, consistent with the rendered mesh.
+std::optional<glm::dvec2> geodetic_to_local(const Heightfield& hf, double lat_deg, double lon_deg);
+
+}  // namespace ig::terrain

@@ -1,0 +1,58 @@
+#pragma once
+// A regular grid of terrain heights in metres, plus where it sits on Earth.
+//
+// Terrain-local frame (used everywhere in the IG): x east, y north, z up, in
+// metres; sample (i, j) sits at (i * spacing_x_m, j * spacing_y_m, at(i, j)).
+// Row j = 0 is the SOUTH edge (files store north first; loaders flip).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ig::terrain {
+
+// Affine map from terrain-local grid indices to the DEM's own CRS, kept so
+// geodetic poses can be placed on the grid (GDAL geotransform convention,
+// but for our south-up row order: crs = gt[0] + i*gt[1] + j*gt[2], ...).
+struct GeoReference {
+  std::string crs_wkt;                  // the DEM's CRS as WKT
+  std::string crs_name;                 // short name, e.g. "EPSG:4326" or "WGS 84"
+  bool geographic = false;              // lat/lon degrees (true) or projected metres
+  std::array<double, 6> grid_to_crs{};  // (i, j) sample centre -> CRS x, y
+};
+
+struct Heightfield {
+  int width = 0;   // samples west -> east
+  int height = 0;  // samples south -> north
+  double spacing_x_m = 1.0;
+  double spacing_y_m = 1.0;
+  std::vector<float> heights;  // width * height, row-major, row 0 = south
+
+  // Statistics filled by finalize_stats().
+  float min_m = 0.0f;
+  float max_m = 0.0f;
+  double mean_m = 0.0;
+  std::int64_t nodata_count = 0;  // samples that were nodata in the file and got filled
+
+  std::optional<GeoReference> georef;
+  std::string source;  // file path or generator description, for logs
+
+  float at(int i, int j) const { return heights[static_cast<std::size_t>(j) * width + i]; }
+  float& at(int i, int j) { return heights[static_cast<std::size_t>(j) * width + i]; }
+  // Clamped lookup: outside samples take the nearest edge sample.
+  float at_clamped(int i, int j) const;
+  double extent_x_m() const { return (width - 1) * spacing_x_m; }
+  double extent_y_m() const { return (height - 1) * spacing_y_m; }
+  // Bilinear height at local (x, y) metres (clamped to the grid).
+  double sample_bilinear(double x_m, double y_m) const;
+  // Height on the rendered surface (the two triangles per quad, split along
+  // the (i,j)-(i+1,j+1) diagonal) at local (x, y) metres, clamped.
+  double sample_surface(double x_m, double y_m) const;
+
+  void finalize_stats();
+};
+
+}  // namespace ig::terrain
