@@ -1,0 +1,106 @@
+#pragma once
+// A scripted run: which terrain, how to render it, which channels, the
+// keyframed ownship path, the simulation time step and when to capture.
+// Schema and examples: docs/scenario.md. Parsing is strict: an unknown key or
+// a bad value throws ScenarioError naming the key path (e.g. "path.keys[2].t").
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ig::io {
+
+struct ScenarioError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Parameters of the seeded fractal terrain generator (fBm + ridged noise).
+struct GeneratorSpec {
+  int size = 1025;            // samples a side, must be 2^n + 1
+  unsigned seed = 1;
+  double spacing_m = 30.0;    // ground spacing, both axes
+  double relief_m = 1500.0;   // height range of the fractal before offset
+  double base_m = 0.0;        // added to every sample
+  int octaves = 9;
+  double ridge_weight = 0.5;  // 0 = pure fBm, 1 = pure ridged noise
+};
+
+struct TerrainSpec {
+  // Exactly one of file / generator is set.
+  std::optional<std::string> file;  // environment variables already expanded
+  std::string encoding = "auto";    // auto | terrain-rgb | png16
+  double scale = 1.0;               // png16: metres = value * scale + offset
+  double offset = 0.0;
+  std::optional<double> spacing_m;  // overrides the file's spacing (images have none)
+  std::optional<GeneratorSpec> generator;
+};
+
+struct RenderSpec {
+  int width = 640;
+  int height = 480;
+  double fov_y_deg = 60.0;
+  double near_m = 0.5;
+  double far_m = 300000.0;
+  std::string method = "reference";
+  double fog_visibility_m = 60000.0;  // distance where fog reaches ~98 %; 0 = off
+  std::array<float, 3> sky_zenith_rgb{0.22f, 0.42f, 0.78f};
+  std::array<float, 3> sky_horizon_rgb{0.70f, 0.80f, 0.92f};
+  std::array<float, 3> sun_direction{-0.4f, 0.5f, 0.75f};  // towards the sun, local ENU
+  std::optional<std::string> imagery;  // optional RGB image draped over the DEM
+  double frame_budget_ms = 16.667;     // frames slower than this are counted
+  bool vsync = true;                   // windowed only
+};
+
+struct ChannelSpec {
+  std::string name = "main";
+  double heading_offset_deg = 0.0;
+  double pitch_offset_deg = 0.0;
+  double roll_offset_deg = 0.0;
+  std::optional<double> fov_y_deg;  // overrides render.fov_y_deg
+};
+
+enum class PositionFrame { Local, Geodetic };
+enum class AltitudeMode { AboveSeaLevel, AboveGround };
+
+struct PathKey {
+  double t_s = 0.0;
+  // Local: x east, y north, z up (m). Geodetic: lat deg, lon deg, alt m.
+  std::array<double, 3> position{};
+  double heading_deg = 0.0;  // 0 = north, clockwise positive
+  double pitch_deg = 0.0;    // nose up positive
+  double roll_deg = 0.0;     // right wing down positive
+};
+
+struct PathSpec {
+  PositionFrame frame = PositionFrame::Local;
+  AltitudeMode altitude = AltitudeMode::AboveSeaLevel;
+  std::vector<PathKey> keys;  // strictly increasing t_s, at least one
+};
+
+struct Scenario {
+  std::string name;
+  std::string source_path;  // file it was read from ("" when parsed from text)
+  TerrainSpec terrain;
+  RenderSpec render;
+  std::vector<ChannelSpec> channels;  // at least one
+  PathSpec path;
+  double time_step_s = 1.0 / 60.0;
+  double duration_s = 10.0;             // defaults to the last key's time when omitted
+  std::vector<double> capture_times_s;  // captured as PNG (nearest frame)
+};
+
+// Parse JSON text / a file. Throws ScenarioError("<where>: <key path>: <reason>").
+Scenario parse_scenario(const std::string& json_text, const std::string& origin = "<string>");
+Scenario load_scenario(const std::string& path);
+
+// "${VAR}" and "$VAR" expansion; throws ScenarioError naming an unset variable.
+std::string expand_env(const std::string& text);
+
+// Number of frames the scenario runs: floor(duration / step + 1e-9) + 1 (the
+// epsilon absorbs rounding: 0.3 s at 0.1 s is 4 frames). Frame k is at
+// t = k * step. Throws ScenarioError for a step <= 0 or a negative duration.
+int scenario_frame_count(const Scenario& s);
+
+}  // namespace ig::io
