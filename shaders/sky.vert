@@ -1,0 +1,9 @@
+#version 450 core
+// Full-screen triangle on the far plane (reversed-Z: depth 0). Drawn after
+// the terrain with depth test GEQUAL, so it only fills pixels nothing covered.
+out vec2 v_ndc;
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0;
+  v_ndc = p;
+  gl_Position = vec4(p, 0.0, 1.0);
+}

@@ -1,0 +1,54 @@
+#version 450 core
+// Terrain shading shared by every LOD method, so methods differ only in their
+// geometry: per-pixel normal from the full-resolution height texture, height
+// and slope colour ramp (or an imagery texture), one directional light, fog.
+in vec3 v_rel;
+in vec2 v_sample;
+in float v_height;
+
+uniform sampler2D u_height;     // R32F, linear filtering for normals
+uniform sampler2D u_imagery;    // RGB draped over the DEM (only when u_has_imagery)
+uniform bool u_has_imagery;
+uniform ivec2 u_dem_size;
+uniform vec2 u_spacing;
+uniform vec2 u_height_range;    // DEM min, max (m)
+uniform vec3 u_sun_dir;         // towards the sun, normalised
+uniform vec3 u_fog_color;
+uniform float u_fog_k;          // fog factor 1 - exp(-(k d)^2); 0 = no fog
+
+layout(location = 0) out vec4 o_color;
+
+float height_at(vec2 s) {
+  return textureLod(u_height, (s + 0.5) / vec2(u_dem_size), 0.0).r;
+}
+
+vec3 ramp(float h01, float slope) {
+  vec3 low = vec3(0.36, 0.45, 0.25);    // valley vegetation
+  vec3 mid = vec3(0.47, 0.42, 0.30);    // dry slopes
+  vec3 rock = vec3(0.52, 0.50, 0.48);
+  vec3 snow = vec3(0.93, 0.94, 0.96);
+  vec3 c = mix(low, mid, smoothstep(0.15, 0.45, h01));
+  c = mix(c, rock, smoothstep(0.45, 0.75, h01));
+  c = mix(c, rock, smoothstep(0.55, 0.85, slope));
+  float snow_line = 0.82 + 0.1 * slope;
+  return mix(c, snow, smoothstep(snow_line, snow_line + 0.06, h01));
+}
+
+void main() {
+  vec2 s = v_sample;
+  float hl = height_at(s - vec2(1, 0)), hr = height_at(s + vec2(1, 0));
+  float hd = height_at(s - vec2(0, 1)), hu = height_at(s + vec2(0, 1));
+  vec3 n = normalize(vec3(-(hr - hl) / (2.0 * u_spacing.x), -(hu - hd) / (2.0 * u_spacing.y), 1.0));
+  float slope = 1.0 - n.z;
+  float span = max(u_height_range.y - u_height_range.x, 1.0);
+  float h01 = clamp((v_height - u_height_range.x) / span, 0.0, 1.0);
+
+  vec3 albedo = u_has_imagery ? texture(u_imagery, (s + 0.5) / vec2(u_dem_size)).rgb
+                              : ramp(h01, clamp(slope * 3.0, 0.0, 1.0));
+  float diffuse = max(dot(n, u_sun_dir), 0.0);
+  vec3 color = albedo * (0.25 + 0.85 * diffuse);
+
+  float d = length(v_rel);
+  float fog = 1.0 - exp(-(u_fog_k * d) * (u_fog_k * d));
+  o_color = vec4(mix(color, u_fog_color, fog), 1.0);
+}

@@ -1,0 +1,43 @@
+# ig run end to end: the outputs a user looks at, headless and windowed.
+set(IG_TEST_OUT ${CMAKE_BINARY_DIR}/test-out)
+
+add_test(NAME cli.run.default_outputs
+  COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/run_default'
+    '$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --frames 6 --size 320x240 --out '${IG_TEST_OUT}/run_default' --quiet
+    cd '${IG_TEST_OUT}/run_default'
+    test -s frames.csv && test -s summary.json && test -s final.png && test -s frametime.png
+    test \"$(ls capture_main_*.png | wc -l)\" -ge 1
+    test \"$(wc -l < frames.csv)\" -eq 7
+    head -1 frames.csv | grep -q '^frame,channel,sim_time_s,wall_ms,'
+    grep -q '\"gl_renderer\"' summary.json && grep -q '\"median_ms\"' summary.json
+    echo outputs ok")
+set_tests_properties(cli.run.default_outputs PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "outputs ok")
+
+# The windowed path (GLFW) under a virtual X server.
+add_test(NAME cli.run.window_under_xvfb
+  COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/run_window'
+    xvfb-run -a -s '-screen 0 640x480x24' '$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --window --vsync off --frames 3 --size 320x240 --out '${IG_TEST_OUT}/run_window' --quiet
+    grep -q '\"headless\": false' '${IG_TEST_OUT}/run_window/summary.json'
+    test -s '${IG_TEST_OUT}/run_window/final.png'
+    echo window ok")
+set_tests_properties(cli.run.window_under_xvfb PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "window ok")
+
+add_test(NAME cli.run.missing_scenario
+  COMMAND bash -c "'$<TARGET_FILE:ig>' run /nonexistent/scn.json 2>&1; test $? -ne 0 && echo exit-nonzero")
+set_tests_properties(cli.run.missing_scenario PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "/nonexistent/scn.json.*exit-nonzero")
+
+add_test(NAME cli.run.unknown_method
+  COMMAND bash -c "'$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --method nope --frames 1 --out '${IG_TEST_OUT}/run_nope' 2>&1; test $? -ne 0 && echo exit-nonzero")
+set_tests_properties(cli.run.unknown_method PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "unknown method 'nope'.*exit-nonzero")
+
+# The Sierra Nevada flight on the real 4097^2 DEM (skips without IG_DEM_DIR).
+add_test(NAME cli.run.sierra_real_dem
+  COMMAND bash -c "if [ -z \"$IG_DEM_DIR\" ]; then echo 'IG_DEM_DIR not set: real-DEM run skipped'; exit 77; fi
+    set -e; rm -rf '${IG_TEST_OUT}/run_sierra'
+    '$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/sierra_owens_valley.json' --frames 2 --size 320x240 --out '${IG_TEST_OUT}/run_sierra' --quiet
+    grep -q '\"width\": 4097' '${IG_TEST_OUT}/run_sierra/summary.json'
+    test -s '${IG_TEST_OUT}/run_sierra/final.png'
+    echo sierra ok")
+set_tests_properties(cli.run.sierra_real_dem PROPERTIES LABELS cli SKIP_RETURN_CODE 77)

@@ -1,0 +1,60 @@
+// Benchmark: time to load a DEM from disk (GDAL) and to upload its R32F
+// height texture (headless GL). Prints figures; asserts nothing.
+//   build/bin/bench_dem_load [FILE] [--repeat N]
+// FILE defaults to $IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "gl/gl_context.h"
+#include "render/terrain_scene.h"
+#include "stats/frame_log.h"
+#include "terrain/dem_loader.h"
+
+int main(int argc, char** argv) {
+  std::string path;
+  int repeat = 5;
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    if (a == "--repeat" && k + 1 < argc) repeat = std::max(1, std::atoi(argv[++k]));
+    else path = a;
+  }
+  if (path.empty()) {
+    const char* dir = std::getenv("IG_DEM_DIR");
+    if (!dir) {
+      std::fprintf(stderr, "bench_dem_load: give a DEM file or set IG_DEM_DIR\n");
+      return 2;
+    }
+    path = std::string(dir) + "/sierra_nevada_3arcsec_4097.tif";
+  }
+  try {
+    using Clock = std::chrono::steady_clock;
+    std::vector<double> load_ms, upload_ms;
+    ig::terrain::Heightfield hf;
+    for (int k = 0; k < repeat; ++k) {
+      const auto t0 = Clock::now();
+      hf = ig::terrain::load_dem(path);
+      load_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    }
+    auto ctx = ig::gl::create_headless_context();
+    for (int k = 0; k < repeat; ++k) {
+      ig::render::TerrainScene scene(hf, ig::render::ShadingParams{});
+      upload_ms.push_back(scene.upload_ms());
+    }
+    const auto l = ig::stats::percentiles(load_ms), u = ig::stats::percentiles(upload_ms);
+    std::printf("dem: %s (%dx%d, %.1f MiB as float32)\n", path.c_str(), hf.width, hf.height,
+                hf.heights.size() * 4.0 / (1024 * 1024));
+    std::printf("renderer: %s | %s\n", ctx->gl_renderer().c_str(), ctx->gl_version().c_str());
+    std::printf("load (GDAL read + flip + stats), %d runs: median %.1f ms, min %.1f ms, max %.1f ms\n", repeat,
+                l.median, *std::min_element(load_ms.begin(), load_ms.end()), l.max);
+    std::printf("height texture upload R32F (glTextureSubImage2D + glFinish), %d runs: median %.1f ms, max %.1f ms\n",
+                repeat, u.median, u.max);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_dem_load: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,13 @@
+#pragma once
+// Subcommands of the `ig` executable. Each takes the arguments after its own
+// name and returns the process exit code; errors go to stderr as one line.
+
+#include <string>
+#include <vector>
+
+namespace ig::app {
+
+int run_info_command(const std::vector<std::string>& args);  // ig info FILE [...]
+int run_run_command(const std::vector<std::string>& args);   // ig run SCENARIO [...]
+
+}  // namespace ig::app

@@ -1,0 +1,32 @@
+// ig: the image generator. Subcommands dispatch to tools/ig/*_command.cpp.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+
+namespace {
+constexpr const char* kHelp =
+    "ig - terrain image generator\n"
+    "usage:\n"
+    "  ig run SCENARIO.json [--out DIR] [--frames N] [--size WxH] [--method NAME] [--headless|--window]\n"
+    "  ig info DEMFILE [--encoding auto|terrain-rgb|png16] [--scale S] [--offset O] [--spacing M]\n"
+    "  ig help\n";
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fputs(kHelp, stderr);
+    return 2;
+  }
+  const std::string cmd = argv[1];
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  if (cmd == "run") return ig::app::run_run_command(args);
+  if (cmd == "info") return ig::app::run_info_command(args);
+  if (cmd == "help" || cmd == "--help" || cmd == "-h") {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  std::fprintf(stderr, "ig: unknown command '%s'\n%s", cmd.c_str(), kHelp);
+  return 2;
+}

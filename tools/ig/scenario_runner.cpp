@@ -1,0 +1,124 @@
+#include "scenario_runner.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "scene_setup.h"
+
+namespace ig::app {
+namespace {
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+glm::vec3 to_vec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
+}  // namespace
+
+ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
+    : scenario_(std::move(scenario)), options_(options) {
+  auto& r = scenario_.render;
+  if (options.width) r.width = *options.width;
+  if (options.height) r.height = *options.height;
+  if (options.method) r.method = *options.method;
+  if (options.vsync) r.vsync = *options.vsync;
+  if (options_.shader_dir.empty()) options_.shader_dir = gl::default_shader_dir();
+
+  auto t0 = Clock::now();
+  heightfield_ = load_terrain(scenario_.terrain);
+  load_ms_ = ms_since(t0);
+  path_ = std::make_unique<io::PathInterpolator>(place_path(scenario_.path, heightfield_));
+  frame_count_ = options.frames ? *options.frames : io::scenario_frame_count(scenario_);
+
+  gl::ContextOptions co;
+  co.headless = options.headless;
+  co.width = r.width;
+  co.height = r.height;
+  co.fullscreen = options.fullscreen;
+  co.vsync = r.vsync;
+  co.title = "ig - " + scenario_.name;
+  context_ = gl::create_context(co);
+
+  render::ShadingParams shading;
+  shading.sun_direction = to_vec3(r.sun_direction);
+  shading.sky_zenith = to_vec3(r.sky_zenith_rgb);
+  shading.sky_horizon = to_vec3(r.sky_horizon_rgb);
+  shading.fog_visibility_m = r.fog_visibility_m;
+  scene_ = std::make_unique<render::TerrainScene>(heightfield_, shading, r.imagery);
+  method_ = render::make_method(r.method, *scene_, options_.shader_dir);
+  renderer_ = std::make_unique<render::FrameRenderer>(*scene_, *method_, options_.shader_dir);
+
+  for (const auto& spec : scenario_.channels) {
+    ChannelView v;
+    v.spec = spec;
+    v.target = std::make_unique<gl::RenderTarget>(r.width, r.height);
+    channels_.push_back(std::move(v));
+  }
+}
+
+io::Pose ScenarioRunner::pose_at(double t_s) const { return path_->sample(t_s); }
+
+render::Camera ScenarioRunner::camera_for(const io::Pose& pose, const ChannelView& ch) const {
+  const auto& r = scenario_.render;
+  render::Camera c;
+  c.position = pose.position;
+  c.attitude = io::apply_view_offset(
+      pose.attitude, io::Hpr{ch.spec.heading_offset_deg, ch.spec.pitch_offset_deg, ch.spec.roll_offset_deg});
+  c.fov_y_deg = ch.spec.fov_y_deg.value_or(r.fov_y_deg);
+  c.aspect = double(r.width) / double(r.height);
+  c.near_m = r.near_m;
+  c.far_m = r.far_m;
+  return c;
+}
+
+FrameResult ScenarioRunner::render_frame(int k) {
+  FrameResult f;
+  f.frame = k;
+  f.sim_time_s = k * scenario_.time_step_s;
+  auto t0 = Clock::now();
+  f.pose = pose_at(f.sim_time_s);
+  f.pose_ms = ms_since(t0);
+  for (auto& ch : channels_) {
+    t0 = Clock::now();
+    ch.camera = camera_for(f.pose, ch);
+    ch.last = renderer_->render(ch.camera, *ch.target);
+    ch.render_ms = ms_since(t0);
+  }
+  return f;
+}
+
+std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& ch, double readback_ms,
+                                       double present_ms) {
+  const io::Hpr hpr = io::hpr_from_attitude(f.pose.attitude);
+  const auto& m = ch.last.method;
+  std::vector<stats::Cell> row = {
+      {"frame", f.frame},
+      {"channel", ch.spec.name},
+      {"sim_time_s", f.sim_time_s},
+      {"wall_ms", f.pose_ms + ch.render_ms + readback_ms + present_ms},
+      {"pose_ms", f.pose_ms},
+      {"lod_ms", ch.last.timings.lod_ms},
+      {"terrain_ms", ch.last.timings.terrain_ms},
+      {"sky_ms", ch.last.timings.sky_ms},
+      {"readback_ms", readback_ms},
+      {"present_ms", present_ms},
+      {"triangles", m.triangles},
+      {"passes", m.passes},
+      {"x_m", f.pose.position.x},
+      {"y_m", f.pose.position.y},
+      {"z_m", f.pose.position.z},
+      {"heading_deg", hpr.heading_deg},
+      {"pitch_deg", hpr.pitch_deg},
+      {"roll_deg", hpr.roll_deg},
+  };
+  for (const auto& [name, value] : m.columns) row.emplace_back(name, value);
+  return row;
+}
+
+void ScenarioRunner::present() {
+  if (!channels_.empty()) {
+    const auto& t = *channels_.front().target;
+    context_->present(t.fbo(), t.width(), t.height());
+  }
+}
+
+}  // namespace ig::app

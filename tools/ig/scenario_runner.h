@@ -1,0 +1,89 @@
+#pragma once
+// Replays a scenario frame by frame: the IG's data flow in one place,
+//   scripted pose -> camera(s) -> LOD update -> passes -> capture -> frame log.
+// ig run drives it to the end and writes the outputs; tests drive it frame by
+// frame and look at the pixels.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/gl_context.h"
+#include "gl/render_target.h"
+#include "io/path_interpolator.h"
+#include "io/scenario.h"
+#include "render/frame_renderer.h"
+#include "render/terrain_method.h"
+#include "render/terrain_scene.h"
+#include "stats/frame_log.h"
+#include "terrain/heightfield.h"
+
+namespace ig::app {
+
+struct RunOptions {
+  std::optional<int> frames;          // overrides the scenario's duration
+  std::optional<int> width, height;   // overrides render size
+  std::optional<std::string> method;  // overrides render.method
+  bool headless = true;
+  bool fullscreen = false;
+  std::optional<bool> vsync;
+  std::string shader_dir;             // "" = gl::default_shader_dir()
+};
+
+struct ChannelView {
+  io::ChannelSpec spec;
+  render::Camera camera;
+  std::unique_ptr<gl::RenderTarget> target;
+  render::ViewResult last;
+  double render_ms = 0.0;  // LOD update + passes of the last frame
+};
+
+struct FrameResult {
+  int frame = 0;
+  double sim_time_s = 0.0;
+  io::Pose pose;
+  double pose_ms = 0.0;
+};
+
+// One frames.csv row for a channel; wall_ms = pose + render + readback + present.
+std::vector<stats::Cell> frame_log_row(const FrameResult& frame, const ChannelView& channel,
+                                       double readback_ms, double present_ms);
+
+class ScenarioRunner {
+ public:
+  // Loads the terrain, creates its own GL context and every GPU resource.
+  // Throws with a one-line reason (bad file, no GL 4.5, unknown method...).
+  ScenarioRunner(io::Scenario scenario, const RunOptions& options);
+
+  const io::Scenario& scenario() const { return scenario_; }
+  const terrain::Heightfield& heightfield() const { return heightfield_; }
+  const gl::GlContext& context() const { return *context_; }
+  render::TerrainMethod& method() { return *method_; }
+  int frame_count() const { return frame_count_; }
+  double load_ms() const { return load_ms_; }
+  std::vector<ChannelView>& channels() { return channels_; }
+
+  // Renders frame k (sim time k * step) for every channel into its target.
+  FrameResult render_frame(int k);
+  // Pose at simulation time t (terrain-local, metres above sea level).
+  io::Pose pose_at(double t_s) const;
+  void present();
+
+ private:
+  render::Camera camera_for(const io::Pose& pose, const ChannelView& channel) const;
+
+  io::Scenario scenario_;
+  RunOptions options_;
+  terrain::Heightfield heightfield_;
+  double load_ms_ = 0.0;
+  std::unique_ptr<io::PathInterpolator> path_;
+  std::unique_ptr<gl::GlContext> context_;
+  std::unique_ptr<render::TerrainScene> scene_;
+  std::unique_ptr<render::TerrainMethod> method_;
+  std::unique_ptr<render::FrameRenderer> renderer_;
+  std::vector<ChannelView> channels_;
+  int frame_count_ = 0;
+};
+
+}  // namespace ig::app

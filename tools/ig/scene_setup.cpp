@@ -1,0 +1,52 @@
+#include "scene_setup.h"
+
+#include <string>
+
+#include "terrain/dem_loader.h"
+#include "terrain/georef.h"
+#include "terrain/synthetic_terrain.h"
+
+namespace ig::app {
+
+terrain::Heightfield load_terrain(const io::TerrainSpec& spec) {
+  if (spec.generator) {
+    const auto& g = *spec.generator;
+    terrain::SyntheticTerrainParams p;
+    p.size = g.size;
+    p.seed = g.seed;
+    p.spacing_m = g.spacing_m;
+    p.relief_m = g.relief_m;
+    p.base_m = g.base_m;
+    p.octaves = g.octaves;
+    p.ridge_weight = g.ridge_weight;
+    return terrain::generate_synthetic_terrain(p);
+  }
+  terrain::DemLoadOptions o;
+  o.encoding = spec.encoding;
+  o.scale = spec.scale;
+  o.offset = spec.offset;
+  o.spacing_m = spec.spacing_m;
+  return terrain::load_dem(*spec.file, o);
+}
+
+io::PathSpec place_path(const io::PathSpec& path, const terrain::Heightfield& hf) {
+  io::PathSpec out = path;
+  out.frame = io::PositionFrame::Local;
+  out.altitude = io::AltitudeMode::AboveSeaLevel;
+  for (size_t k = 0; k < out.keys.size(); ++k) {
+    auto& p = out.keys[k].position;
+    const std::string where = "path.keys[" + std::to_string(k) + "].position";
+    if (path.frame == io::PositionFrame::Geodetic) {
+      if (!hf.georef)
+        throw io::ScenarioError(where + ": geodetic position but the terrain (" + hf.source +
+                                ") has no georeference; use \"frame\": \"local\"");
+      const auto xy = terrain::geodetic_to_local(hf, p[0], p[1]);
+      if (!xy) throw io::ScenarioError(where + ": cannot transform lat/lon into the DEM's CRS");
+      p = {xy->x, xy->y, p[2]};
+    }
+    if (path.altitude == io::AltitudeMode::AboveGround) p[2] += hf.sample_surface(p[0], p[1]);
+  }
+  return out;
+}
+
+}  // namespace ig::app

@@ -1,0 +1,36 @@
+#pragma once
+// An offscreen framebuffer: RGBA8 colour + 32-bit float depth (reversed-Z
+// needs the float depth buffer for its precision). Every frame, headless or
+// windowed, is drawn here first.
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace ig::gl {
+
+class RenderTarget {
+ public:
+  RenderTarget(int width, int height);
+  ~RenderTarget();
+  RenderTarget(const RenderTarget&) = delete;
+  RenderTarget& operator=(const RenderTarget&) = delete;
+
+  void bind() const;
+  int width() const { return width_; }
+  int height() const { return height_; }
+  GLuint fbo() const { return fbo_; }
+  GLuint color_texture() const { return color_; }
+  GLuint depth_texture() const { return depth_; }
+
+  // Read back, top row first (image order). RGBA8 and float depth.
+  std::vector<std::uint8_t> read_rgba() const;
+  std::vector<float> read_depth() const;
+
+ private:
+  int width_, height_;
+  GLuint fbo_ = 0, color_ = 0, depth_ = 0;
+};
+
+}  // namespace ig::gl

@@ -1,0 +1,114 @@
+#include "gl/shader_program.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/gl_context.h"
+
+namespace ig::gl {
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw GlError("shader " + path + ": cannot be read");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+GLuint compile(GLenum stage, const std::string& path) {
+  const std::string source = read_text(path);
+  GLuint s = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(s, 1, &text, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+    std::string log(std::max(len, 1), '\0');
+    glGetShaderInfoLog(s, len, nullptr, log.data());
+    glDeleteShader(s);
+    throw GlError("shader " + path + ": compile failed: " + log);
+  }
+  return s;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram(const std::string& dir, const std::string& vertex_file,
+                             const std::string& fragment_file) {
+  const std::string vpath = dir + "/" + vertex_file, fpath = dir + "/" + fragment_file;
+  GLuint vs = compile(GL_VERTEX_SHADER, vpath);
+  GLuint fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fpath);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  id_ = glCreateProgram();
+  glAttachShader(id_, vs);
+  glAttachShader(id_, fs);
+  glLinkProgram(id_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
+    std::string log(std::max(len, 1), '\0');
+    glGetProgramInfoLog(id_, len, nullptr, log.data());
+    glDeleteProgram(id_);
+    id_ = 0;
+    throw GlError("program " + vpath + " + " + fragment_file + ": link failed: " + log);
+  }
+}
+
+ShaderProgram::~ShaderProgram() {
+  if (id_) glDeleteProgram(id_);
+}
+
+ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
+  if (this != &o) {
+    if (id_) glDeleteProgram(id_);
+    id_ = o.id_;
+    o.id_ = 0;
+  }
+  return *this;
+}
+
+void ShaderProgram::set(const char* n, const glm::vec2& v) const { glProgramUniform2fv(id_, location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::vec3& v) const { glProgramUniform3fv(id_, location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::vec4& v) const { glProgramUniform4fv(id_, location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::ivec2& v) const { glProgramUniform2iv(id_, location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::mat4& m) const {
+  glProgramUniformMatrix4fv(id_, location(n), 1, GL_FALSE, glm::value_ptr(m));
+}
+
+std::string default_shader_dir() {
+  if (const char* env = std::getenv("IG_SHADER_DIR"); env && *env) return env;
+  std::vector<char> buf(4096);
+  const ssize_t n = readlink("/proc/self/exe", buf.data(), buf.size() - 1);
+  if (n > 0) {
+    std::filesystem::path exe(std::string(buf.data(), size_t(n)));
+    auto beside = exe.parent_path() / "shaders";
+    if (std::filesystem::exists(beside / "terrain.vert")) return beside.string();
+  }
+#ifdef IG_DEFAULT_SHADER_DIR
+  return IG_DEFAULT_SHADER_DIR;
+#else
+  return "shaders";
+#endif
+}
+
+}  // namespace ig::gl

@@ -1,0 +1,47 @@
+#pragma once
+// GLSL programs loaded at run time from the shader directory (one file per
+// stage). Compile and link errors name the file and carry the driver's log.
+
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace ig::gl {
+
+class ShaderProgram {
+ public:
+  ShaderProgram() = default;
+  // Loads <dir>/<vertex_file> and <dir>/<fragment_file>. Throws GlError.
+  ShaderProgram(const std::string& dir, const std::string& vertex_file,
+                const std::string& fragment_file);
+  ~ShaderProgram();
+  ShaderProgram(ShaderProgram&& o) noexcept : id_(o.id_) { o.id_ = 0; }
+  ShaderProgram& operator=(ShaderProgram&& o) noexcept;
+  ShaderProgram(const ShaderProgram&) = delete;
+  ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+  GLuint id() const { return id_; }
+  void use() const { glUseProgram(id_); }
+  GLint location(const char* name) const { return glGetUniformLocation(id_, name); }
+  void set(const char* name, int v) const { glProgramUniform1i(id_, location(name), v); }
+  void set(const char* name, float v) const { glProgramUniform1f(id_, location(name), v); }
+  void set(const char* name, const glm::vec2& v) const;
+  void set(const char* name, const glm::vec3& v) const;
+  void set(const char* name, const glm::vec4& v) const;
+  void set(const char* name, const glm::ivec2& v) const;
+  void set(const char* name, const glm::mat4& m) const;
+
+ private:
+  GLuint id_ = 0;
+};
+
+// Directory holding the GLSL files: $IG_SHADER_DIR, else "shaders" beside
+// the executable, else the build tree's copy.
+std::string default_shader_dir();
+
+}  // namespace ig::gl

@@ -1,0 +1,58 @@
+#include "render/frame_renderer.h"
+
+#include <chrono>
+
+namespace ig::render {
+namespace {
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+}  // namespace
+
+FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
+    : scene_(scene), method_(method), sky_(shader_dir, "sky.vert", "sky.frag") {
+  glCreateVertexArrays(1, &empty_vao_);
+}
+
+ViewResult FrameRenderer::render(const Camera& camera, const gl::RenderTarget& target) {
+  ViewResult r;
+  auto t0 = Clock::now();
+  method_.update(camera);
+  r.timings.lod_ms = ms_since(t0);
+
+  t0 = Clock::now();
+  target.bind();
+  // Reversed-Z: clip depth in [0, 1], cleared to 0 (= infinitely far), nearer is greater.
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_GREATER);
+  glDisable(GL_CULL_FACE);  // an eye below the terrain still sees its underside
+  glClearColor(0.f, 0.f, 0.f, 1.f);
+  glClearDepth(0.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  r.method = method_.draw(camera);
+  glFinish();
+  r.timings.terrain_ms = ms_since(t0);
+
+  t0 = Clock::now();
+  const auto& s = scene_.shading();
+  sky_.use();
+  sky_.set("u_inv_view_proj", glm::inverse(camera.view_projection()));
+  sky_.set("u_zenith", s.sky_zenith);
+  sky_.set("u_horizon", s.sky_horizon);
+  sky_.set("u_sun_dir", s.sun_direction);
+  glDepthFunc(GL_GEQUAL);  // only where the depth buffer still holds the clear value
+  glDepthMask(GL_FALSE);
+  glBindVertexArray(empty_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+  glFinish();
+  r.timings.sky_ms = ms_since(t0);
+  if (!r.method.passes.empty()) r.method.passes += "+";
+  r.method.passes += "sky";
+  return r;
+}
+
+}  // namespace ig::render

@@ -1,0 +1,38 @@
+#pragma once
+// One view of one frame: LOD update, the method's terrain passes, then the
+// sky into whatever the terrain left uncovered. Each stage is timed on the
+// wall clock and closed with glFinish (GL timer queries are not real GPU
+// times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
+
+#include "gl/render_target.h"
+#include "gl/shader_program.h"
+#include "render/camera.h"
+#include "render/terrain_method.h"
+#include "render/terrain_scene.h"
+
+namespace ig::render {
+
+struct ViewTimings {
+  double lod_ms = 0.0;
+  double terrain_ms = 0.0;
+  double sky_ms = 0.0;
+};
+
+struct ViewResult {
+  MethodFrameStats method;
+  ViewTimings timings;
+};
+
+class FrameRenderer {
+ public:
+  FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
+  ViewResult render(const Camera& camera, const gl::RenderTarget& target);
+
+ private:
+  const TerrainScene& scene_;
+  TerrainMethod& method_;
+  gl::ShaderProgram sky_;
+  GLuint empty_vao_ = 0;
+};
+
+}  // namespace ig::render

@@ -1,0 +1,30 @@
+#pragma once
+// A static (n+1) x (n+1) vertex grid of integer sample offsets with its index
+// buffer: the one mesh every grid-based pass draws many times (placed by
+// uniforms, displaced by the height texture). Quads split along the
+// (i,j)-(i+1,j+1) diagonal, the convention the ray cast and
+// Heightfield::sample_surface() also use.
+
+#include <epoxy/gl.h>
+
+namespace ig::render {
+
+class GridMesh {
+ public:
+  explicit GridMesh(int quads_per_side);
+  ~GridMesh();
+  GridMesh(const GridMesh&) = delete;
+  GridMesh& operator=(const GridMesh&) = delete;
+
+  int quads_per_side() const { return n_; }
+  GLsizei index_count() const { return index_count_; }
+  // Draw the whole grid (the caller has set the program and its uniforms).
+  void draw() const;
+
+ private:
+  int n_;
+  GLuint vao_ = 0, vbo_ = 0, ibo_ = 0;
+  GLsizei index_count_ = 0;
+};
+
+}  // namespace ig::render

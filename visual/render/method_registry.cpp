@@ -1,0 +1,19 @@
+// The one place that maps method names to implementations.
+#include <stdexcept>
+
+#include "render/reference_method.h"
+#include "render/terrain_method.h"
+
+namespace ig::render {
+
+std::vector<std::string> method_names() { return {"reference"}; }
+
+std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
+                                           const std::string& shader_dir) {
+  if (name == "reference") return std::make_unique<ReferenceMethod>(scene, shader_dir);
+  std::string choices;
+  for (const auto& n : method_names()) choices += (choices.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown method '" + name + "' (available: " + choices + ")");
+}
+
+}  // namespace ig::render

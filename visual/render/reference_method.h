@@ -1,0 +1,35 @@
+#pragma once
+// The reference renderer: the full-resolution mesh (every DEM sample a
+// vertex), drawn as fixed-size chunks of one shared grid mesh with per-chunk
+// frustum culling. Ground truth for every image-error measurement.
+
+#include <vector>
+
+#include "gl/shader_program.h"
+#include "render/grid_mesh.h"
+#include "render/terrain_method.h"
+
+namespace ig::render {
+
+class ReferenceMethod final : public TerrainMethod {
+ public:
+  ReferenceMethod(const TerrainScene& scene, const std::string& shader_dir, int chunk_quads = 64);
+  std::string name() const override { return "reference"; }
+  std::vector<std::string> column_names() const override { return {"chunks_drawn", "chunks_total"}; }
+  void update(const Camera& camera) override;
+  MethodFrameStats draw(const Camera& camera) override;
+
+ private:
+  struct Chunk {
+    int i0, j0;          // origin sample
+    int quads_x, quads_y;  // real quads (edge chunks are smaller)
+    float min_h, max_h;
+  };
+  const TerrainScene& scene_;
+  gl::ShaderProgram program_;
+  GridMesh mesh_;
+  std::vector<Chunk> chunks_;
+  std::vector<int> visible_;
+};
+
+}  // namespace ig::render

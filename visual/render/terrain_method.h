@@ -1,0 +1,42 @@
+#pragma once
+// The interface every terrain LOD method implements (reference, two-level,
+// and the baselines). A frame is: update() on the CPU (selection / LOD, no
+// GL draw calls), then draw() issuing the passes into the bound target.
+// Methods never read sockets or files; they see the camera and the scene.
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/terrain_scene.h"
+
+namespace ig::render {
+
+struct MethodFrameStats {
+  long long triangles = 0;  // triangles submitted this frame
+  std::string passes;       // which passes ran, e.g. "terrain" or "level1+band+level0"
+  // Method-specific per-frame columns, same names and order every frame.
+  std::vector<std::pair<std::string, double>> columns;
+};
+
+class TerrainMethod {
+ public:
+  virtual ~TerrainMethod() = default;
+  virtual std::string name() const = 0;
+  // Names of the method-specific columns (fixed for the run).
+  virtual std::vector<std::string> column_names() const = 0;
+  // CPU-side LOD selection for this camera.
+  virtual void update(const Camera& camera) = 0;
+  // Draw into the currently bound framebuffer (depth test set up by the caller).
+  virtual MethodFrameStats draw(const Camera& camera) = 0;
+};
+
+// Names accepted by make_method().
+std::vector<std::string> method_names();
+// Throws std::invalid_argument naming the method and the choices.
+std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
+                                           const std::string& shader_dir);
+
+}  // namespace ig::render

@@ -1,0 +1,82 @@
+#include "render/terrain_scene.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "gl/gl_context.h"
+
+namespace ig::render {
+
+TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& shading,
+                           const std::optional<std::string>& imagery_path)
+    : heightfield_(hf), shading_(shading) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (hf.width > max_size || hf.height > max_size)
+    throw gl::GlError(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
+                      " exceeds the GL texture limit " + std::to_string(max_size));
+  shading_.sun_direction = glm::normalize(shading_.sun_direction);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  glCreateTextures(GL_TEXTURE_2D, 1, &height_tex_);
+  glTextureStorage2D(height_tex_, 1, GL_R32F, hf.width, hf.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(height_tex_, 0, 0, 0, hf.width, hf.height, GL_RED, GL_FLOAT, hf.heights.data());
+  glTextureParameteri(height_tex_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(height_tex_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(height_tex_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(height_tex_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glFinish();  // so upload_ms is the real transfer, not just the enqueue
+  upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  if (imagery_path) {
+    auto in = OIIO::ImageInput::open(*imagery_path);
+    if (!in) throw gl::GlError(*imagery_path + ": cannot open imagery: " + OIIO::geterror());
+    const auto& spec = in->spec();
+    std::vector<unsigned char> rgb(size_t(spec.width) * spec.height * 3);
+    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, rgb.data()))
+      throw gl::GlError(*imagery_path + ": cannot read imagery: " + in->geterror());
+    // Image rows run north first; the DEM's texture rows run south first.
+    std::vector<unsigned char> flipped(rgb.size());
+    const size_t row = size_t(spec.width) * 3;
+    for (int y = 0; y < spec.height; ++y)
+      std::copy_n(rgb.begin() + y * row, row, flipped.begin() + (spec.height - 1 - y) * row);
+    glCreateTextures(GL_TEXTURE_2D, 1, &imagery_tex_);
+    const int levels = 1 + int(std::floor(std::log2(std::max(spec.width, spec.height))));
+    glTextureStorage2D(imagery_tex_, levels, GL_RGB8, spec.width, spec.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(imagery_tex_, 0, 0, 0, spec.width, spec.height, GL_RGB, GL_UNSIGNED_BYTE, flipped.data());
+    glGenerateTextureMipmap(imagery_tex_);
+    glTextureParameteri(imagery_tex_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(imagery_tex_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  }
+}
+
+TerrainScene::~TerrainScene() {
+  glDeleteTextures(1, &height_tex_);
+  if (imagery_tex_) glDeleteTextures(1, &imagery_tex_);
+}
+
+void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera) const {
+  glBindTextureUnit(0, height_tex_);
+  p.set("u_height", 0);
+  p.set("u_has_imagery", has_imagery() ? 1 : 0);
+  if (has_imagery()) {
+    glBindTextureUnit(1, imagery_tex_);
+    p.set("u_imagery", 1);
+  }
+  p.set("u_dem_size", glm::ivec2(heightfield_.width, heightfield_.height));
+  p.set("u_spacing", glm::vec2(float(heightfield_.spacing_x_m), float(heightfield_.spacing_y_m)));
+  p.set("u_height_range", glm::vec2(heightfield_.min_m, heightfield_.max_m));
+  p.set("u_sun_dir", shading_.sun_direction);
+  p.set("u_fog_color", shading_.sky_horizon);
+  // Fog reaches 98 % at the visibility distance: exp(-(k V)^2) = 0.02.
+  const double k = shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;
+  p.set("u_fog_k", float(k));
+  p.set("u_view_proj", camera.view_projection());
+}
+
+}  // namespace ig::render

@@ -1,0 +1,58 @@
+#pragma once
+// GPU-side terrain shared by every LOD method: the height texture, optional
+// imagery, the shading parameters and the shading program's common uniforms.
+// Methods own only their geometry and selection, so all of them shade alike.
+//
+// Height texture: R32F. Every int16 DEM height is exact in float32 and a
+// float32 DEM keeps its own precision (24-bit mantissa: < 0.5 mm at 8848 m);
+// R16 with scale/offset would quantise float DEMs (e.g. 0.07 m steps over a
+// 4400 m range) for half the memory (4097^2: 64 MiB vs 32 MiB).
+
+#include <epoxy/gl.h>
+
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "gl/shader_program.h"
+#include "render/camera.h"
+#include "terrain/heightfield.h"
+
+namespace ig::render {
+
+struct ShadingParams {
+  glm::vec3 sun_direction{-0.4f, 0.5f, 0.75f};  // towards the sun, ENU
+  glm::vec3 sky_zenith{0.22f, 0.42f, 0.78f};
+  glm::vec3 sky_horizon{0.70f, 0.80f, 0.92f};
+  double fog_visibility_m = 60000.0;  // 0 = no fog
+};
+
+class TerrainScene {
+ public:
+  // Uploads the height texture (and imagery, only when given).
+  TerrainScene(const terrain::Heightfield& heightfield, const ShadingParams& shading,
+               const std::optional<std::string>& imagery_path = std::nullopt);
+  ~TerrainScene();
+  TerrainScene(const TerrainScene&) = delete;
+  TerrainScene& operator=(const TerrainScene&) = delete;
+
+  const terrain::Heightfield& heightfield() const { return heightfield_; }
+  const ShadingParams& shading() const { return shading_; }
+  GLuint height_texture() const { return height_tex_; }
+  bool has_imagery() const { return imagery_tex_ != 0; }
+  double upload_ms() const { return upload_ms_; }
+
+  // Binds the textures and sets the uniforms every terrain program shares
+  // (see shaders/terrain.frag and terrain_grid.vert).
+  void bind_common(const gl::ShaderProgram& program, const Camera& camera) const;
+
+ private:
+  const terrain::Heightfield& heightfield_;
+  ShadingParams shading_;
+  GLuint height_tex_ = 0;
+  GLuint imagery_tex_ = 0;
+  double upload_ms_ = 0.0;
+};
+
+}  // namespace ig::render
