@@ -1,0 +1,461 @@
+// Ray casts against the rendered heightfield surface; see ray_cast.h and
+// docs/ray-cast.md.
+//
+// The watertight property relies on every shared quantity (a vertex's
+// ray-space coordinates, an edge's edge function) being computed by the same
+// operations wherever it is used. Fused multiply-add contraction could break
+// that (one copy fused, another not), so it is switched off for this file.
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+#include "terrain/ray_cast.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace ig::terrain {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Origins within this distance of the surface (vertically, or along the ray)
+// count as on it: rounding makes the sign of such a t meaningless.
+constexpr double kSurfaceEpsM = 1e-9;
+// Relative slack on box (slab) tests so rounding can never cull a box that
+// the triangle test would hit; it only makes culling slightly conservative.
+constexpr double kBoxSlackRel = 1e-10;
+
+// A ray prepared once for slab tests and for the watertight triangle test
+// (Woop, Benthin & Wald, "Watertight Ray/Triangle Intersection", JCGT 2013):
+// translate vertices to the ray origin, permute so the dominant direction
+// axis is kz, shear so the ray becomes the +Z axis. Then the ray hits a
+// triangle iff the 2D origin lies inside its projected (X, Y) triangle.
+struct Ray {
+  glm::dvec3 o{}, d{};  // origin, unit direction
+  double inv[3]{};      // 1 / d per axis where par[a] is false
+  bool par[3]{};        // d[a] == 0 (or 1/d[a] overflows): no slab, a range test
+  int kx = 0, ky = 1, kz = 2;
+  double sx = 0, sy = 0, sz = 1;
+  double mx[3]{}, my[3]{}, mz[3]{};  // rows of the permute + shear transform
+  double t_lo = -kSurfaceEpsM;  // smallest t accepted (then clamped to 0)
+  double slack_abs = 0;         // absolute slack (metres) for box tests
+};
+
+// Rejects NaN/inf/zero input; normalises dir.
+bool make_ray(glm::dvec3 origin, glm::dvec3 dir, double max_t, double scene_scale, Ray& r) {
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(origin[a]) || !std::isfinite(dir[a])) return false;
+  if (std::isnan(max_t) || max_t < 0) return false;
+  // Scale by the largest component first so the length neither overflows
+  // nor underflows.
+  const double m = std::max({std::abs(dir.x), std::abs(dir.y), std::abs(dir.z)});
+  if (m == 0) return false;
+  dir /= m;
+  dir /= std::sqrt(dir.x * dir.x + dir.y * dir.y + dir.z * dir.z);
+  r.o = origin;
+  r.d = dir;
+  for (int a = 0; a < 3; ++a) {
+    r.par[a] = true;
+    if (dir[a] != 0) {
+      const double inv = 1.0 / dir[a];
+      if (std::isfinite(inv)) {
+        r.inv[a] = inv;
+        r.par[a] = false;
+      }
+    }
+  }
+  const double ax = std::abs(dir.x), ay = std::abs(dir.y), az = std::abs(dir.z);
+  r.kz = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+  r.kx = (r.kz + 1) % 3;
+  r.ky = (r.kx + 1) % 3;
+  r.sx = dir[r.kx] / dir[r.kz];
+  r.sy = dir[r.ky] / dir[r.kz];
+  r.sz = 1.0 / dir[r.kz];
+  r.mx[r.kx] = 1;
+  r.mx[r.kz] = -r.sx;
+  r.my[r.ky] = 1;
+  r.my[r.kz] = -r.sy;
+  r.mz[r.kz] = r.sz;
+  const double o_mag = std::max({std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)});
+  r.slack_abs = 1e-12 * (1.0 + std::max(o_mag, scene_scale));
+  return true;
+}
+
+// Vertex in ray space: (X, Y) is its 2D position relative to the ray, Z its
+// depth along the ray scaled so that t = barycentric-weighted Z.
+struct RVtx {
+  double x, y, z;
+};
+
+// X = p[kx] - sx * p[kz], Y = p[ky] - sy * p[kz], Z = sz * p[kz] with p the
+// vertex relative to the origin, written with per-ray coefficient rows (0, 1
+// or the shear) so no runtime indexing is needed; the extra terms are exact
+// zeros, so every vertex is transformed by the same arithmetic.
+inline RVtx to_ray_space(const Ray& r, double px, double py, double pz) {
+  const double x = px - r.o.x, y = py - r.o.y, z = pz - r.o.z;
+  return {x * r.mx[0] + y * r.mx[1] + z * r.mx[2], x * r.my[0] + y * r.my[1] + z * r.my[2],
+          x * r.mz[0] + y * r.mz[1] + z * r.mz[2]};
+}
+
+// Edge function of directed edge a->b at the ray (2D origin): twice the
+// signed area of (ray, a, b). Always evaluated with the edge's canonical
+// direction (see intersect_cell) so that neighbours sharing the edge get
+// bit-identical values with opposite signs.
+inline double edge_fn(const RVtx& a, const RVtx& b) { return a.x * b.y - a.y * b.x; }
+
+// u, v, w: edge functions opposite vertices a, b, c (unnormalised barycentric
+// weights of the ray's point). Inclusive: all >= 0 or all <= 0 is a hit, so
+// edges and vertices belong to every triangle that shares them.
+inline bool hit_triangle(double u, double v, double w, double az, double bz, double cz, const Ray& r,
+                         double& t_best) {
+  if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
+  const double det = u + v + w;
+  if (det == 0) return false;  // ray parallel to the triangle's plane
+  const double t = (u * az + v * bz + w * cz) / det;
+  if (!(t >= r.t_lo) || t > t_best) return false;
+  t_best = std::max(t, 0.0);
+  return true;
+}
+
+// Both triangles of cell (i, j). On a hit with t <= t_best, lowers t_best.
+inline bool intersect_cell(const Heightfield& hf, const Ray& r, int i, int j, double& t_best) {
+  const double x0 = double(i) * hf.spacing_x_m, x1 = double(i + 1) * hf.spacing_x_m;
+  const double y0 = double(j) * hf.spacing_y_m, y1 = double(j + 1) * hf.spacing_y_m;
+  const float* row0 = hf.heights.data() + static_cast<std::size_t>(j) * hf.width + i;
+  const float* row1 = row0 + hf.width;
+  const RVtx p00 = to_ray_space(r, x0, y0, row0[0]);
+  const RVtx p10 = to_ray_space(r, x1, y0, row0[1]);
+  const RVtx p01 = to_ray_space(r, x0, y1, row1[0]);
+  const RVtx p11 = to_ray_space(r, x1, y1, row1[1]);
+  // Canonical edge directions: west->east, south->north, and the diagonal
+  // (i,j)->(i+1,j+1). The east edge here is the west edge of cell i+1 and the
+  // north edge is the south edge of cell j+1, computed identically there.
+  const double e_s = edge_fn(p00, p10);  // south
+  const double e_n = edge_fn(p01, p11);  // north
+  const double e_w = edge_fn(p00, p01);  // west
+  const double e_e = edge_fn(p10, p11);  // east
+  const double e_d = edge_fn(p00, p11);  // diagonal
+  bool hit = false;
+  // Triangle (p00, p10, p11): weights E(p10,p11), E(p11,p00), E(p00,p10).
+  hit |= hit_triangle(e_e, -e_d, e_s, p00.z, p10.z, p11.z, r, t_best);
+  // Triangle (p00, p11, p01): weights E(p11,p01), E(p01,p00), E(p00,p11).
+  hit |= hit_triangle(-e_n, -e_w, e_d, p00.z, p11.z, p01.z, r, t_best);
+  return hit;
+}
+
+inline double slack(const Ray& r, double t) { return kBoxSlackRel * std::abs(t) + r.slack_abs; }
+// enter - slack(enter) <= exit + slack(exit), i.e. the interval is not
+// empty up to rounding.
+// Infinite bounds (a parallel axis outside its slab gives [inf, -inf]) must
+// not be excused by an infinite slack.
+inline bool overlaps(const Ray& r, double enter, double exit) {
+  if (enter <= exit) return true;
+  const double gap = enter - exit;
+  return std::isfinite(gap) && gap <= kBoxSlackRel * (std::abs(enter) + std::abs(exit)) + 2 * r.slack_abs;
+}
+
+// One axis of a slab test; false when the ray cannot be inside [lo, hi].
+inline bool slab(const Ray& r, int a, double lo, double hi, double& enter, double& exit) {
+  if (r.par[a]) return r.o[a] >= lo - r.slack_abs && r.o[a] <= hi + r.slack_abs;
+  double t0 = (lo - r.o[a]) * r.inv[a];
+  double t1 = (hi - r.o[a]) * r.inv[a];
+  if (t0 > t1) std::swap(t0, t1);
+  enter = std::max(enter, t0);
+  exit = std::min(exit, t1);
+  return true;
+}
+
+// Range of t over which one axis coordinate stays within a slab; for an
+// axis the ray is parallel to, everything or nothing.
+struct Span {
+  double in, out;
+};
+
+// Spans for the n (1 or 2) consecutive slabs [planes[k], planes[k+1]] of axis a.
+inline void axis_spans(const Ray& r, int a, const double planes[3], int n, Span out[2]) {
+  if (r.par[a]) {
+    for (int k = 0; k < n; ++k) {
+      const bool inside = r.o[a] >= planes[k] - r.slack_abs && r.o[a] <= planes[k + 1] + r.slack_abs;
+      out[k] = inside ? Span{-kInf, kInf} : Span{kInf, -kInf};
+    }
+    return;
+  }
+  double t[3];
+  for (int k = 0; k <= n; ++k) t[k] = (planes[k] - r.o[a]) * r.inv[a];
+  for (int k = 0; k < n; ++k) out[k] = Span{std::min(t[k], t[k + 1]), std::max(t[k], t[k + 1])};
+}
+
+// Ray vs axis-aligned box, clipped to [t_lo, t_max]. On success gives the
+// 2D (footprint only) entry t, used to order siblings, and a conservative
+// (slack-lowered) 3D entry t, used to prune against the best hit so far.
+inline bool box_test(const Ray& r, double x0, double x1, double y0, double y1, double z0, double z1,
+                     double t_max, double& t2d, double& key) {
+  double enter = r.t_lo, exit = t_max;
+  if (!slab(r, 0, x0, x1, enter, exit) || !slab(r, 1, y0, y1, enter, exit)) return false;
+  t2d = enter;
+  if (!slab(r, 2, z0, z1, enter, exit)) return false;
+  key = enter - slack(r, enter);
+  return overlaps(r, enter, exit);
+}
+
+bool valid_spacing(const Heightfield& hf) {
+  return std::isfinite(hf.spacing_x_m) && std::isfinite(hf.spacing_y_m) && hf.spacing_x_m > 0 &&
+         hf.spacing_y_m > 0;
+}
+
+double scene_scale(const Heightfield& hf, double zmin, double zmax) {
+  return std::max({hf.extent_x_m(), hf.extent_y_m(), std::abs(zmin), std::abs(zmax)});
+}
+
+std::optional<RayHit> make_hit(const Ray& r, double t, int i, int j) {
+  return RayHit{t, r.o + t * r.d, i, j};
+}
+
+// An origin on the surface (vertically within kSurfaceEpsM, inside the
+// footprint) is a hit at t = 0 whatever the direction. Without this, an
+// origin on an edge with the ray leaving on the convex side (a touch, not a
+// crossing) would be hit or missed at the whim of rounding.
+// Same rule within one cell (the traversal's form of it): the origin is
+// inside the closed footprint of cell (i, j) and within kSurfaceEpsM
+// vertically of the cell's surface.
+bool origin_on_cell_surface(const Heightfield& hf, const Ray& r, int i, int j) {
+  const double sx = hf.spacing_x_m, sy = hf.spacing_y_m;
+  const double fx = (r.o.x - double(i) * sx) / sx, fy = (r.o.y - double(j) * sy) / sy;
+  constexpr double kTol = 1e-12;
+  if (fx < -kTol || fx > 1 + kTol || fy < -kTol || fy > 1 + kTol) return false;
+  const double u = std::clamp(fx, 0.0, 1.0), v = std::clamp(fy, 0.0, 1.0);
+  const double h00 = hf.at(i, j), h10 = hf.at(i + 1, j), h01 = hf.at(i, j + 1), h11 = hf.at(i + 1, j + 1);
+  const double h = u >= v ? h00 + (h10 - h00) * u + (h11 - h10) * v : h00 + (h01 - h00) * v + (h11 - h01) * u;
+  return std::abs(r.o.z - h) <= kSurfaceEpsM;
+}
+
+std::optional<RayHit> origin_on_surface(const Heightfield& hf, const Ray& r) {
+  const double ex = hf.extent_x_m(), ey = hf.extent_y_m();
+  if (!(r.o.x >= 0 && r.o.x <= ex && r.o.y >= 0 && r.o.y <= ey)) return std::nullopt;
+  if (std::abs(r.o.z - hf.sample_surface(r.o.x, r.o.y)) > kSurfaceEpsM) return std::nullopt;
+  const int i = std::clamp(int(r.o.x / hf.spacing_x_m), 0, hf.width - 2);
+  const int j = std::clamp(int(r.o.y / hf.spacing_y_m), 0, hf.height - 2);
+  return RayHit{0.0, r.o, i, j};
+}
+
+}  // namespace
+
+std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, glm::dvec3 origin,
+                               glm::dvec3 dir, double max_t) {
+  RayCastStats unused;
+  return cast_ray(hf, pyr, origin, dir, max_t, unused);
+}
+
+std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, glm::dvec3 origin,
+                               glm::dvec3 dir, double max_t, RayCastStats& stats) {
+  stats = RayCastStats{};
+  if (hf.width < 2 || hf.height < 2 || !valid_spacing(hf)) return std::nullopt;
+  if (pyr.empty() || pyr.cells_x() != hf.width - 1 || pyr.cells_y() != hf.height - 1 ||
+      hf.heights.size() != static_cast<std::size_t>(hf.width) * static_cast<std::size_t>(hf.height))
+    throw std::invalid_argument("cast_ray: HeightPyramid was not built from this heightfield");
+  const HeightPyramid::MinMax root = pyr.root();
+  Ray r;
+  if (!make_ray(origin, dir, max_t, scene_scale(hf, root.lo, root.hi), r)) return std::nullopt;
+
+  const double sx = hf.spacing_x_m, sy = hf.spacing_y_m;
+  const std::int64_t ncx = pyr.cells_x(), ncy = pyr.cells_y();
+  const double ext_x = double(ncx) * sx, ext_y = double(ncy) * sy;
+  // Node size per level in metres. (c * 2^k) * s rounds exactly like
+  // double(c << k) * s, so node edges coincide bit for bit with the vertex
+  // coordinates i * s used by the triangle test.
+  double node_w[40], node_h[40];
+  node_w[0] = sx;
+  node_h[0] = sy;
+  for (int k = 1; k < pyr.num_levels(); ++k) {  // doubling is exact
+    node_w[k] = node_w[k - 1] * 2;
+    node_h[k] = node_h[k - 1] * 2;
+  }
+
+  // Why the first hit found is the nearest one (front-to-back order):
+  // siblings' footprints are closed rectangles with disjoint interiors, and
+  // a line meets each convex footprint in one interval of t, so those
+  // intervals follow one another along the ray. Children are pushed so they
+  // pop in increasing order of footprint entry t, and the traversal is depth
+  // first, so every leaf under an earlier sibling is finished before any
+  // leaf under a later one. Every surface point inside a footprint lies
+  // within that footprint's interval, so a hit in an earlier subtree has t <=
+  // that subtree's exit <= the entry of everything still on the stack: no
+  // later node can contain a nearer hit, and the traversal ends. The only
+  // exceptions are ties on shared boundaries (ray through a node corner or
+  // running along a node edge, vertical rays) and rounding; for those the
+  // loop keeps popping but discards any node whose conservative entry t
+  // exceeds the best hit, which costs one comparison per stacked node and
+  // keeps the result exact whatever the order.
+  struct Entry {
+    double key;  // conservative 3D entry t
+    int level, i, j;
+  };
+  Entry stack[4 * 40];  // <= 3 siblings left per level + 1; levels <= 32
+  int sp = 0;
+  double best = max_t;
+  bool found = false;
+  int hit_i = -1, hit_j = -1;
+
+  {
+    double t2d, key;
+    ++stats.nodes_tested;
+    if (!box_test(r, 0.0, double(ncx) * sx, 0.0, double(ncy) * sy, root.lo, root.hi, best, t2d, key))
+      return std::nullopt;
+    stack[sp++] = Entry{key, pyr.num_levels() - 1, 0, 0};
+  }
+
+  while (sp > 0) {
+    const Entry e = stack[--sp];
+    if (e.key > best) continue;
+    if (e.level == 0) {
+      ++stats.cells_tested;
+      // A cell whose box contains the origin (entry t <= 0): an origin on
+      // its surface is a hit at t = 0 (see origin_on_surface).
+      if (e.key <= 0 && origin_on_cell_surface(hf, r, e.i, e.j)) {
+        best = 0;
+        found = true;
+        hit_i = e.i;
+        hit_j = e.j;
+        continue;
+      }
+      if (intersect_cell(hf, r, e.i, e.j, best)) {
+        found = true;
+        hit_i = e.i;
+        hit_j = e.j;
+      }
+      continue;
+    }
+    const int cl = e.level - 1;
+    const int cw = pyr.level_width(cl), ch = pyr.level_height(cl);
+    // Child columns ci0 (and ci0 + 1 if it exists) split the node at xm; same
+    // for rows. Slab t values at the 3 planes per axis are shared by children.
+    const int ci0 = 2 * e.i, cj0 = 2 * e.j;
+    const int ncol = std::min(2, cw - ci0), nrow = std::min(2, ch - cj0);
+    const double xs[3] = {double(ci0) * node_w[cl], std::min(double(ci0 + 1) * node_w[cl], ext_x),
+                          std::min(double(ci0 + 2) * node_w[cl], ext_x)};
+    const double ys[3] = {double(cj0) * node_h[cl], std::min(double(cj0 + 1) * node_h[cl], ext_y),
+                          std::min(double(cj0 + 2) * node_h[cl], ext_y)};
+    Span spx[2], spy[2];
+    axis_spans(r, 0, xs, ncol, spx);
+    axis_spans(r, 1, ys, nrow, spy);
+    struct Child {
+      double t2d, key;
+      int i, j;
+    } kids[4];
+    int n = 0;
+    for (int dj = 0; dj < nrow; ++dj) {
+      for (int di = 0; di < ncol; ++di) {
+        double enter = std::max(r.t_lo, std::max(spx[di].in, spy[dj].in));
+        double exit = std::min(best, std::min(spx[di].out, spy[dj].out));
+        if (!overlaps(r, enter, exit)) continue;  // footprint not crossed: node not even read
+        const double t2d = enter;
+        ++stats.nodes_tested;
+        const HeightPyramid::MinMax mm = pyr.node(cl, ci0 + di, cj0 + dj);
+        if (!slab(r, 2, mm.lo, mm.hi, enter, exit) || !overlaps(r, enter, exit)) continue;
+        kids[n++] = Child{t2d, enter - slack(r, enter), ci0 + di, cj0 + dj};
+      }
+    }
+    // Insertion sort by footprint entry (n <= 4), then push farthest first.
+    for (int a = 1; a < n; ++a)
+      for (int b = a; b > 0 && kids[b].t2d < kids[b - 1].t2d; --b) std::swap(kids[b], kids[b - 1]);
+    for (int a = n - 1; a >= 0; --a) {
+      stack[sp++] = Entry{kids[a].key, cl, kids[a].i, kids[a].j};
+      // Their data is read soon (dependent loads otherwise wait one after the
+      // other on memory): the grandchildren's block, or a cell's heights.
+      if (cl > 0) {
+        pyr.prefetch(cl - 1, 2 * kids[a].i, 2 * kids[a].j);
+      } else {
+#if defined(__GNUC__) || defined(__clang__)
+        const float* h = hf.heights.data() + static_cast<std::size_t>(kids[a].j) * hf.width + kids[a].i;
+        __builtin_prefetch(h);
+        __builtin_prefetch(h + hf.width);
+#endif
+      }
+    }
+  }
+  if (!found) return std::nullopt;
+  return make_hit(r, best, hit_i, hit_j);
+}
+
+std::optional<RayHit> cast_ray_dda(const Heightfield& hf, glm::dvec3 origin, glm::dvec3 dir, double max_t) {
+  if (hf.width < 2 || hf.height < 2 || !valid_spacing(hf)) return std::nullopt;
+  if (hf.heights.size() != static_cast<std::size_t>(hf.width) * static_cast<std::size_t>(hf.height))
+    return std::nullopt;
+  Ray r;  // height range from finalize_stats() (only scales a tiny slack; 0 if never called)
+  if (!make_ray(origin, dir, max_t, scene_scale(hf, hf.min_m, hf.max_m), r)) return std::nullopt;
+  if (auto h = origin_on_surface(hf, r)) return h;
+  const int ncx = hf.width - 1, ncy = hf.height - 1;
+  const double sx = hf.spacing_x_m, sy = hf.spacing_y_m;
+
+  // Clip to the 2D footprint (no height bounds: deliberately naive).
+  double enter = r.t_lo, exit = max_t;
+  if (!slab(r, 0, 0.0, ncx * sx, enter, exit) || !slab(r, 1, 0.0, ncy * sy, enter, exit)) return std::nullopt;
+  if (!overlaps(r, enter, exit)) return std::nullopt;
+
+  double best = max_t;
+  bool found = false;
+  int hit_i = -1, hit_j = -1;
+  auto test = [&](int i, int j) {
+    if (i < 0 || j < 0 || i >= ncx || j >= ncy) return;
+    if (intersect_cell(hf, r, i, j, best)) {
+      found = true;
+      hit_i = i;
+      hit_j = j;
+    }
+  };
+  // Cells [a, b] whose closed footprint contains coordinate c: both sides
+  // when c is on (or within rounding of) a grid line.
+  auto cells_at = [](double c, double s, int n, int& a, int& b) {
+    const double g = c / s, k = std::round(g);
+    a = b = std::clamp(int(std::floor(g)), 0, n - 1);
+    if (std::abs(g - k) <= 1e-9 * std::max(1.0, std::abs(g)) && k > 0 && k < n) {
+      a = int(k) - 1;
+      b = int(k);
+    }
+  };
+
+  if (r.par[0] && r.par[1]) {  // vertical ray: the cell(s) under the origin
+    int i0, i1, j0, j1;
+    cells_at(r.o.x, sx, ncx, i0, i1);
+    cells_at(r.o.y, sy, ncy, j0, j1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) test(i, j);
+    if (!found) return std::nullopt;
+    return make_hit(r, best, hit_i, hit_j);
+  }
+
+  const glm::dvec3 p = r.o + std::max(enter, 0.0) * r.d;
+  int i = std::clamp(int(std::floor(p.x / sx)), 0, ncx - 1);
+  int j = std::clamp(int(std::floor(p.y / sy)), 0, ncy - 1);
+  const int si = r.par[0] ? 0 : (r.d.x > 0 ? 1 : -1);
+  const int sj = r.par[1] ? 0 : (r.d.y > 0 ? 1 : -1);
+  auto next_x = [&] { return si == 0 ? kInf : (double(i + (si > 0)) * sx - r.o.x) * r.inv[0]; };
+  auto next_y = [&] { return sj == 0 ? kInf : (double(j + (sj > 0)) * sy - r.o.y) * r.inv[1]; };
+  for (int guard = 0; guard < ncx + ncy + 4; ++guard) {
+    test(i, j);
+    const double tx = next_x(), ty = next_y();
+    const double tn = std::min(tx, ty);
+    if (found && best < tn - slack(r, tn)) break;  // later cells start after tn
+    if (tn - slack(r, tn) > exit) break;
+    const double tie = slack(r, tn);
+    if (tx < ty - tie) {
+      i += si;
+    } else if (ty < tx - tie) {
+      j += sj;
+    } else {  // through (or within rounding of) a corner: also test both side cells
+      test(i + si, j);
+      test(i, j + sj);
+      i += si;
+      j += sj;
+    }
+    if (i < 0 || j < 0 || i >= ncx || j >= ncy) break;
+  }
+  if (!found) return std::nullopt;
+  return make_hit(r, best, hit_i, hit_j);
+}
+
+}  // namespace ig::terrain
