@@ -14,5 +14,5 @@ void main() {
   vec3 c = mix(u_horizon, u_zenith, sqrt(clamp(el, 0.0, 1.0)));
   float sun = pow(max(dot(dir, u_sun_dir), 0.0), 400.0);
   c = mix(c, vec3(1.0, 0.97, 0.9), sun * step(0.0, el));
-  o_color = vec4(c, 1.0);
+  o_color = vec4(c, 0.0);  // alpha 0: not terrain (coverage marker)
 }

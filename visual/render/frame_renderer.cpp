@@ -32,7 +32,7 @@ ViewResult FrameRenderer::render(const Camera& camera, const gl::RenderTarget& t
   glClearColor(0.f, 0.f, 0.f, 1.f);
   glClearDepth(0.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  r.method = method_.draw(camera);
+  r.method = method_.draw(camera, target);
   glFinish();
   r.timings.terrain_ms = ms_since(t0);
 

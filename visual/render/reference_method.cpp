@@ -34,7 +34,7 @@ void ReferenceMethod::update(const Camera& camera) {
   }
 }
 
-MethodFrameStats ReferenceMethod::draw(const Camera& camera) {
+MethodFrameStats ReferenceMethod::draw(const Camera& camera, const gl::RenderTarget&) {
   const auto& hf = scene_.heightfield();
   MethodFrameStats stats;
   stats.passes = visible_.empty() ? "" : "terrain";

@@ -17,7 +17,7 @@ class ReferenceMethod final : public TerrainMethod {
   std::string name() const override { return "reference"; }
   std::vector<std::string> column_names() const override { return {"chunks_drawn", "chunks_total"}; }
   void update(const Camera& camera) override;
-  MethodFrameStats draw(const Camera& camera) override;
+  MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
 
  private:
   struct Chunk {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "gl/render_target.h"
 #include "render/camera.h"
 #include "render/terrain_scene.h"
 
@@ -29,8 +30,9 @@ class TerrainMethod {
   virtual std::vector<std::string> column_names() const = 0;
   // CPU-side LOD selection for this camera.
   virtual void update(const Camera& camera) = 0;
-  // Draw into the currently bound framebuffer (depth test set up by the caller).
-  virtual MethodFrameStats draw(const Camera& camera) = 0;
+  // Draw into the target, which the caller has bound and cleared with
+  // reversed-Z depth set up. A method with offscreen passes rebinds it after.
+  virtual MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) = 0;
 };
 
 // Names accepted by make_method().

@@ -1,0 +1,23 @@
+#version 450 core
+// Level0: the static whole-terrain ROAM mesh. Vertices are DEM sample
+// indices; heights come from the height texture. Eye-relative positions are
+// formed from integer sample differences, so they stay exact far from the
+// origin.
+layout(location = 0) in ivec2 a_sample;
+
+uniform sampler2D u_height;
+uniform vec2 u_spacing;
+uniform ivec2 u_eye_sample;  // floor(eye / spacing)
+uniform vec3 u_eye_frac;     // eye - eye_sample * spacing (xy), eye height (z)
+uniform mat4 u_view_proj;
+
+out vec3 v_rel;
+out vec2 v_sample;
+
+void main() {
+  float h = texelFetch(u_height, a_sample, 0).r;
+  vec3 rel = vec3(vec2(a_sample - u_eye_sample) * u_spacing - u_eye_frac.xy, h - u_eye_frac.z);
+  v_rel = rel;
+  v_sample = vec2(a_sample);
+  gl_Position = u_view_proj * vec4(rel, 1.0);
+}

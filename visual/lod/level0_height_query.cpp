@@ -1,0 +1,54 @@
+#include "lod/level0_height_query.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ig::lod {
+
+Level0HeightQuery::Level0HeightQuery(const Level0Mesh& mesh, int w, int h, int buckets)
+    : mesh_(mesh), buckets_(buckets), cell_x_(std::max(1, w - 1) / double(buckets)),
+      cell_y_(std::max(1, h - 1) / double(buckets)), bucket_tris_(size_t(buckets) * buckets) {
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    double lo_i = 1e30, hi_i = -1e30, lo_j = 1e30, hi_j = -1e30;
+    for (int k = 0; k < 3; ++k) {
+      const auto s = mesh.samples[mesh.indices[t + k]];
+      lo_i = std::min(lo_i, double(s.x));
+      hi_i = std::max(hi_i, double(s.x));
+      lo_j = std::min(lo_j, double(s.y));
+      hi_j = std::max(hi_j, double(s.y));
+    }
+    const int b0 = std::clamp(int(lo_i / cell_x_), 0, buckets - 1), b1 = std::clamp(int(hi_i / cell_x_), 0, buckets - 1);
+    const int c0 = std::clamp(int(lo_j / cell_y_), 0, buckets - 1), c1 = std::clamp(int(hi_j / cell_y_), 0, buckets - 1);
+    for (int c = c0; c <= c1; ++c)
+      for (int b = b0; b <= b1; ++b) bucket_tris_[size_t(c) * buckets + b].push_back(int(t / 3));
+  }
+}
+
+double Level0HeightQuery::height_at(double i, double j) const {
+  const int b = std::clamp(int(i / cell_x_), 0, buckets_ - 1), c = std::clamp(int(j / cell_y_), 0, buckets_ - 1);
+  double best = std::numeric_limits<double>::quiet_NaN(), best_outside = 1e30;
+  for (int t : bucket_tris_[size_t(c) * buckets_ + b]) {
+    glm::dvec2 p[3];
+    double z[3];
+    for (int k = 0; k < 3; ++k) {
+      const auto v = mesh_.indices[size_t(t) * 3 + k];
+      p[k] = glm::dvec2(mesh_.samples[v]);
+      z[k] = mesh_.positions[v].z;
+    }
+    const double det = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+    if (det == 0.0) continue;
+    const double l1 = ((i - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (j - p[0].y)) / det;
+    const double l2 = ((p[1].x - p[0].x) * (j - p[0].y) - (i - p[0].x) * (p[1].y - p[0].y)) / det;
+    const double l0 = 1.0 - l1 - l2;
+    const double outside = std::max({-l0, -l1, -l2, 0.0});
+    if (outside < best_outside) {  // inside (0) wins; else the least-outside triangle
+      best_outside = outside;
+      best = l0 * z[0] + l1 * z[1] + l2 * z[2];
+    }
+    if (outside == 0.0) break;
+  }
+  return best;
+}
+
+}  // namespace ig::lod

@@ -1,0 +1,432 @@
+#include "render/twolevel_method.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "gl/gl_context.h"
+
+namespace ig::render {
+namespace {
+
+constexpr int kBlockQuads = 32;  // Level1 is drawn as blocks of 32 x 32 quads, each frustum-culled
+
+// Min/max height over cells [i0, i1) x [j0, j1) from a pyramid level whose
+// nodes are at least as large as the rectangle (a few nodes, conservative).
+terrain::HeightPyramid::MinMax rect_minmax(const terrain::HeightPyramid& p, int i0, int j0, int i1, int j1) {
+  i0 = std::clamp(i0, 0, p.cells_x() - 1);
+  j0 = std::clamp(j0, 0, p.cells_y() - 1);
+  i1 = std::clamp(i1, i0 + 1, p.cells_x());
+  j1 = std::clamp(j1, j0 + 1, p.cells_y());
+  int level = 0;
+  while (level + 1 < p.num_levels() && (1 << (level + 1)) <= std::max(i1 - i0, j1 - j0)) ++level;
+  terrain::HeightPyramid::MinMax m{1e30f, -1e30f};
+  for (int j = j0 >> level; j <= (j1 - 1) >> level; ++j)
+    for (int i = i0 >> level; i <= (i1 - 1) >> level; ++i) {
+      const auto n = p.node(level, i, j);
+      m.lo = std::min(m.lo, n.lo);
+      m.hi = std::max(m.hi, n.hi);
+    }
+  return m;
+}
+
+GLuint make_query() {
+  GLuint q = 0;
+  glCreateQueries(GL_SAMPLES_PASSED, 1, &q);
+  return q;
+}
+
+}  // namespace
+
+// Walls around Level1's square (close the step between Level1's edge and
+// Level0's coarser surface there, whichever is higher) and the transition
+// band ring, for one (N, w_trans) pair.
+struct TwoLevelMethod::SizeMeshes {
+  GLuint wall_vao = 0, wall_vbo[2] = {0, 0}, wall_ibo = 0;
+  GLsizei wall_indices = 0;
+  std::vector<glm::ivec2> perimeter;  // Level1 edge samples, relative to its origin
+  std::vector<glm::vec2> wall_z;      // per wall vertex: (1, absolute height)
+  GLuint ring_vao = 0, ring_vbo = 0, ring_ibo = 0;
+  GLsizei ring_indices = 0;
+
+  SizeMeshes(int n, int w, int stride) {
+    // Walls: the square's perimeter twice (top and bottom vertex per edge sample).
+    for (int i = 0; i < n - 1; ++i) perimeter.push_back({i, 0});
+    for (int j = 0; j < n - 1; ++j) perimeter.push_back({n - 1, j});
+    for (int i = n - 1; i > 0; --i) perimeter.push_back({i, n - 1});
+    for (int j = n - 1; j > 0; --j) perimeter.push_back({0, j});
+    std::vector<std::int16_t> local;
+    for (const auto& p : perimeter)
+      for (int k = 0; k < 2; ++k) local.insert(local.end(), {std::int16_t(p.x), std::int16_t(p.y)});
+    wall_z.assign(perimeter.size() * 2, glm::vec2(0.0f));
+    std::vector<std::uint32_t> idx;
+    const auto m = std::uint32_t(perimeter.size());
+    for (std::uint32_t k = 0; k < m; ++k) {
+      const std::uint32_t a = 2 * k, b = 2 * ((k + 1) % m);
+      idx.insert(idx.end(), {a, b, b + 1, a, b + 1, a + 1});
+    }
+    wall_indices = GLsizei(idx.size());
+    glCreateBuffers(2, wall_vbo);
+    glNamedBufferStorage(wall_vbo[0], GLsizeiptr(local.size() * 2), local.data(), 0);
+    glNamedBufferStorage(wall_vbo[1], GLsizeiptr(wall_z.size() * sizeof(glm::vec2)), wall_z.data(),
+                         GL_DYNAMIC_STORAGE_BIT);
+    glCreateBuffers(1, &wall_ibo);
+    glNamedBufferStorage(wall_ibo, GLsizeiptr(idx.size() * 4), idx.data(), 0);
+    glCreateVertexArrays(1, &wall_vao);
+    glVertexArrayVertexBuffer(wall_vao, 0, wall_vbo[0], 0, 4);
+    glVertexArrayVertexBuffer(wall_vao, 1, wall_vbo[1], 0, sizeof(glm::vec2));
+    glVertexArrayElementBuffer(wall_vao, wall_ibo);
+    glEnableVertexArrayAttrib(wall_vao, 0);
+    glVertexArrayAttribIFormat(wall_vao, 0, 2, GL_SHORT, 0);
+    glVertexArrayAttribBinding(wall_vao, 0, 0);
+    glEnableVertexArrayAttrib(wall_vao, 1);
+    glVertexArrayAttribFormat(wall_vao, 1, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(wall_vao, 1, 1);
+
+    // Band ring: the grid grown by w on every side, minus Level1's square,
+    // every `stride` samples (w and n - 1 are multiples of stride).
+    local.clear();
+    idx.clear();
+    const int side = (n - 1 + 2 * w) / stride + 1;
+    for (int b = 0; b < side; ++b)
+      for (int a = 0; a < side; ++a) {
+        local.push_back(std::int16_t(-w + a * stride));
+        local.push_back(std::int16_t(-w + b * stride));
+      }
+    auto v = [side](int a, int b) { return std::uint32_t(b * side + a); };
+    for (int b = 0; b + 1 < side; ++b)
+      for (int a = 0; a + 1 < side; ++a) {
+        const int x = -w + a * stride, y = -w + b * stride;
+        const bool inside = x >= 0 && y >= 0 && x + stride <= n - 1 && y + stride <= n - 1;
+        if (inside) continue;
+        idx.insert(idx.end(), {v(a, b), v(a + 1, b), v(a + 1, b + 1), v(a, b), v(a + 1, b + 1), v(a, b + 1)});
+      }
+    ring_indices = GLsizei(idx.size());
+    glCreateBuffers(1, &ring_vbo);
+    glNamedBufferStorage(ring_vbo, GLsizeiptr(local.size() * 2), local.data(), 0);
+    glCreateBuffers(1, &ring_ibo);
+    glNamedBufferStorage(ring_ibo, GLsizeiptr(std::max<size_t>(idx.size(), 1) * 4), idx.data(), 0);
+    glCreateVertexArrays(1, &ring_vao);
+    glVertexArrayVertexBuffer(ring_vao, 0, ring_vbo, 0, 4);
+    glVertexArrayElementBuffer(ring_vao, ring_ibo);
+    glEnableVertexArrayAttrib(ring_vao, 0);
+    glVertexArrayAttribIFormat(ring_vao, 0, 2, GL_SHORT, 0);
+    glVertexArrayAttribBinding(ring_vao, 0, 0);
+  }
+  ~SizeMeshes() {
+    glDeleteVertexArrays(1, &wall_vao);
+    glDeleteBuffers(2, wall_vbo);
+    glDeleteBuffers(1, &wall_ibo);
+    glDeleteVertexArrays(1, &ring_vao);
+    glDeleteBuffers(1, &ring_vbo);
+    glDeleteBuffers(1, &ring_ibo);
+  }
+};
+
+TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
+    : scene_(scene),
+      options_(options),
+      grid_program_(shader_dir, "terrain_grid.vert", "terrain.frag"),
+      level0_program_(shader_dir, "level0.vert", "terrain.frag"),
+      band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
+      count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
+      pyramid_(scene.heightfield()),
+      level0_(lod::build_level0_mesh(scene.heightfield(), lod::Level0Options{options.level0_budget, 0.0})),
+      level0_heights_(level0_, scene.heightfield().width, scene.heightfield().height),
+      block_mesh_(kBlockQuads),
+      controller_(lod::level1_ladder(scene.heightfield().width, scene.heightfield().height, options.max_level1),
+                  lod::SizeControllerOptions{options.a1, options.a2}) {
+  const auto& hf = scene.heightfield();
+  level0_resolution_ = double(level0_.samples.size()) / (double(hf.width) * hf.height);
+
+  std::vector<std::int32_t> samples;
+  for (const auto& s : level0_.samples) samples.insert(samples.end(), {s.x, s.y});
+  glCreateBuffers(1, &level0_vbo_);
+  glNamedBufferStorage(level0_vbo_, GLsizeiptr(samples.size() * 4), samples.data(), 0);
+  glCreateBuffers(1, &level0_ibo_);
+  glNamedBufferStorage(level0_ibo_, GLsizeiptr(level0_.indices.size() * 4), level0_.indices.data(), 0);
+  glCreateVertexArrays(1, &level0_vao_);
+  glVertexArrayVertexBuffer(level0_vao_, 0, level0_vbo_, 0, 8);
+  glVertexArrayElementBuffer(level0_vao_, level0_ibo_);
+  glEnableVertexArrayAttrib(level0_vao_, 0);
+  glVertexArrayAttribIFormat(level0_vao_, 0, 2, GL_INT, 0);
+  glVertexArrayAttribBinding(level0_vao_, 0, 0);
+
+  glCreateFramebuffers(1, &count_fbo_);
+  glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
+  glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
+  glCreateVertexArrays(1, &empty_vao_);
+  for (auto& pair : queries_)
+    for (auto& q : pair) q = make_query();
+}
+
+TwoLevelMethod::~TwoLevelMethod() {
+  size_meshes_.clear();
+  glDeleteVertexArrays(1, &level0_vao_);
+  glDeleteBuffers(1, &level0_vbo_);
+  glDeleteBuffers(1, &level0_ibo_);
+  glDeleteFramebuffers(1, &band_fbo_);
+  glDeleteTextures(1, &band_color_);
+  glDeleteTextures(1, &band_depth_);
+  glDeleteTextures(1, &beta_tex_);
+  glDeleteFramebuffers(1, &count_fbo_);
+  glDeleteVertexArrays(1, &empty_vao_);
+  for (auto& pair : queries_) glDeleteQueries(2, pair);
+}
+
+std::vector<std::string> TwoLevelMethod::column_names() const {
+  return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit"};
+}
+
+TwoLevelMethod::SizeMeshes& TwoLevelMethod::meshes_for(int n, int band_w) {
+  auto& slot = size_meshes_[{n, band_w}];
+  if (!slot) slot = std::make_unique<SizeMeshes>(n, band_w, std::min(options_.band_stride, std::max(band_w, 1)));
+  return *slot;
+}
+
+double TwoLevelMethod::read_previous_ratio() {
+  // Results of the frame before: never wait for them (no stall); if the
+  // driver has not finished, keep the size one more frame.
+  const int prev = parity_ ^ 1;
+  if (!query_pending_[prev]) return -1.0;
+  GLuint available = 0;
+  glGetQueryObjectuiv(queries_[prev][1], GL_QUERY_RESULT_AVAILABLE, &available);
+  if (!available) return -1.0;
+  GLuint64 level1 = 0, terrain = 0;
+  glGetQueryObjectui64v(queries_[prev][0], GL_QUERY_RESULT, &level1);
+  glGetQueryObjectui64v(queries_[prev][1], GL_QUERY_RESULT, &terrain);
+  query_pending_[prev] = false;
+  return terrain > 0 ? double(level1) / double(terrain) : -1.0;
+}
+
+void TwoLevelMethod::update(const Camera& camera) {
+  const auto& hf = scene_.heightfield();
+  const Frustum frustum = frustum_of(camera);
+  const glm::dvec3 dem_lo(0.0, 0.0, hf.min_m), dem_hi(hf.extent_x_m(), hf.extent_y_m(), hf.max_m);
+  terrain_visible_ = frustum.intersects_box(dem_lo - camera.position, dem_hi - camera.position);
+
+  const double ratio = read_previous_ratio();
+  if (ratio >= 0.0) last_ratio_ = ratio;
+  const int n = controller_.update(ratio);
+
+  look_at_ = lod::find_look_at_point(hf, pyramid_, camera.position, camera.forward(), camera.up(),
+                                     options_.fallback_distance_m);
+  // Snap E to a whole sample and keep the square inside the DEM.
+  const int ec_i = int(std::lround(look_at_.point.x / hf.spacing_x_m));
+  const int ec_j = int(std::lround(look_at_.point.y / hf.spacing_y_m));
+  origin_ = {std::clamp(ec_i - (n - 1) / 2, 0, std::max(hf.width - n, 0)),
+             std::clamp(ec_j - (n - 1) / 2, 0, std::max(hf.height - n, 0))};
+
+  // Band width: w_trans = (r0 / r1) * alpha * w1 (r1 = 1: Level1 is full
+  // resolution), rounded to the band stride, at least one stride, at most w1 / 4.
+  const int stride = std::max(1, options_.band_stride);
+  const double w = level0_resolution_ * options_.alpha * (n - 1);
+  band_w_ = std::clamp(int(std::lround(w / stride)) * stride, stride, std::max(stride, (n - 1) / 4 / stride * stride));
+
+  visible_blocks_.clear();
+  if (!terrain_visible_) {
+    band_visible_ = false;
+    return;
+  }
+  const int blocks = (n - 1 + kBlockQuads - 1) / kBlockQuads;
+  for (int bj = 0; bj < blocks; ++bj)
+    for (int bi = 0; bi < blocks; ++bi) {
+      const glm::ivec2 o = origin_ + glm::ivec2(bi, bj) * kBlockQuads;
+      const auto mm = rect_minmax(pyramid_, o.x, o.y, o.x + kBlockQuads, o.y + kBlockQuads);
+      const glm::dvec3 lo(o.x * hf.spacing_x_m, o.y * hf.spacing_y_m, mm.lo - level0_.max_error_m);
+      const glm::dvec3 hi((o.x + kBlockQuads) * hf.spacing_x_m, (o.y + kBlockQuads) * hf.spacing_y_m, mm.hi);
+      if (frustum.intersects_box(lo - camera.position, hi - camera.position)) visible_blocks_.push_back(o);
+    }
+  const glm::ivec2 g0 = origin_ - band_w_, g1 = origin_ + (n - 1) + band_w_;
+  const auto mm = rect_minmax(pyramid_, g0.x, g0.y, g1.x, g1.y);
+  band_visible_ = frustum.intersects_box(
+      glm::dvec3(std::max(g0.x, 0) * hf.spacing_x_m, std::max(g0.y, 0) * hf.spacing_y_m, mm.lo) - camera.position,
+      glm::dvec3(std::min(g1.x, hf.width - 1) * hf.spacing_x_m, std::min(g1.y, hf.height - 1) * hf.spacing_y_m,
+                 mm.hi) - camera.position);
+}
+
+void TwoLevelMethod::ensure_band_target(int width, int height) {
+  if (band_fbo_ && band_target_w_ == width && band_target_h_ == height) return;
+  glDeleteFramebuffers(1, &band_fbo_);
+  glDeleteTextures(1, &band_color_);
+  glDeleteTextures(1, &band_depth_);
+  glCreateTextures(GL_TEXTURE_2D, 1, &band_color_);
+  glTextureStorage2D(band_color_, 1, GL_RGBA16F, width, height);
+  glCreateTextures(GL_TEXTURE_2D, 1, &band_depth_);
+  glTextureStorage2D(band_depth_, 1, GL_DEPTH_COMPONENT32F, width, height);
+  for (GLuint t : {band_color_, band_depth_}) {
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  glCreateFramebuffers(1, &band_fbo_);
+  glNamedFramebufferTexture(band_fbo_, GL_COLOR_ATTACHMENT0, band_color_, 0);
+  glNamedFramebufferTexture(band_fbo_, GL_DEPTH_ATTACHMENT, band_depth_, 0);
+  if (glCheckNamedFramebufferStatus(band_fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw gl::GlError("two-level: band target (RGBA16F + depth) incomplete");
+  band_target_w_ = width;
+  band_target_h_ = height;
+}
+
+void TwoLevelMethod::upload_beta_template(int n, int band_w) {
+  // The paper's 256 x 256 weight template over the grown square: 1 over
+  // Level1, falling to 0 across the band (linear or Gaussian).
+  if (beta_tex_ && beta_for_ == std::make_pair(n, band_w)) return;
+  constexpr int kSize = 256;
+  const double inner = 0.5 * (n - 1) / (0.5 * (n - 1) + band_w);  // Level1's half side / grown half side
+  std::vector<float> beta(kSize * kSize);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const double qx = std::abs((x + 0.5) / kSize * 2.0 - 1.0), qy = std::abs((y + 0.5) / kSize * 2.0 - 1.0);
+      const double t = std::clamp((std::max(qx, qy) - inner) / (1.0 - inner), 0.0, 1.0);
+      const double g = std::exp(-4.5);
+      beta[y * kSize + x] =
+          float(options_.gaussian_beta ? (std::exp(-4.5 * t * t) - g) / (1.0 - g) : 1.0 - t);
+    }
+  if (!beta_tex_) {
+    glCreateTextures(GL_TEXTURE_2D, 1, &beta_tex_);
+    glTextureStorage2D(beta_tex_, 1, GL_R16F, kSize, kSize);
+    glTextureParameteri(beta_tex_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(beta_tex_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(beta_tex_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(beta_tex_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glTextureSubImage2D(beta_tex_, 0, 0, 0, kSize, kSize, GL_RED, GL_FLOAT, beta.data());
+  beta_for_ = {n, band_w};
+}
+
+void TwoLevelMethod::update_walls(SizeMeshes& m, int n) {
+  // Each wall spans from the higher of (Level1 edge, Level0 surface) down to
+  // a little below the lower one, so no sliver opens where Level0's surface
+  // bends between edge samples.
+  constexpr float kBelow = 1.0f;
+  const auto& hf = scene_.heightfield();
+  for (size_t k = 0; k < m.perimeter.size(); ++k) {
+    const glm::ivec2 s = origin_ + m.perimeter[k];
+    const float h1 = hf.at_clamped(s.x, s.y);
+    const double q = level0_heights_.height_at(s.x, s.y);
+    const float h0 = std::isfinite(q) ? float(q) : h1;
+    m.wall_z[2 * k] = {1.0f, std::max(h0, h1)};
+    m.wall_z[2 * k + 1] = {1.0f, std::min(h0, h1) - kBelow};
+  }
+  glNamedBufferSubData(m.wall_vbo[1], 0, GLsizeiptr(m.wall_z.size() * sizeof(glm::vec2)), m.wall_z.data());
+}
+
+MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarget& target) {
+  const auto& hf = scene_.heightfield();
+  const int n = controller_.size();
+  MethodFrameStats stats;
+  long long level1_tris = 0, band_tris = 0, level0_tris = 0;
+  std::vector<std::string> passes;
+  auto rel = [&](glm::ivec2 s) {
+    return glm::vec3(glm::dvec3(s.x * hf.spacing_x_m, s.y * hf.spacing_y_m, 0.0) - camera.position);
+  };
+  const glm::vec4 box(origin_.x, origin_.y, origin_.x + n - 1, origin_.y + n - 1);
+  const glm::vec2 centre = glm::vec2(origin_) + 0.5f * float(n - 1);
+
+  if (terrain_visible_) {
+    // Pass 1: Level1 blocks (+ walls) into the frame, alpha 1.
+    if (!visible_blocks_.empty()) {
+      grid_program_.use();
+      scene_.bind_common(grid_program_, camera);
+      grid_program_.set("u_alpha", 1.0f);
+      for (const auto& o : visible_blocks_) {
+        grid_program_.set("u_origin", o);
+        grid_program_.set("u_origin_rel", rel(o));
+        block_mesh_.draw();
+      }
+      level1_tris = 2LL * kBlockQuads * kBlockQuads * (long long)visible_blocks_.size();
+      SizeMeshes& m = meshes_for(n, band_w_);
+      update_walls(m, n);
+      grid_program_.set("u_origin", origin_);
+      grid_program_.set("u_origin_rel", rel(origin_));
+      glBindVertexArray(m.wall_vao);
+      glDrawElements(GL_TRIANGLES, m.wall_indices, GL_UNSIGNED_INT, nullptr);
+      passes.push_back("level1");
+    }
+
+    // Pass 2: band into its own RGBA16F target (uv relative to the centre, beta, mask).
+    ensure_band_target(target.width(), target.height());
+    glBindFramebuffer(GL_FRAMEBUFFER, band_fbo_);
+    const float clear_band[4] = {0, 0, 0, 0};
+    const float clear_depth = 0.0f;
+    glClearNamedFramebufferfv(band_fbo_, GL_COLOR, 0, clear_band);
+    glClearNamedFramebufferfv(band_fbo_, GL_DEPTH, 0, &clear_depth);
+    if (band_visible_) {
+      SizeMeshes& m = meshes_for(n, band_w_);
+      upload_beta_template(n, band_w_);
+      band_program_.use();
+      scene_.bind_common(band_program_, camera);
+      glBindTextureUnit(2, beta_tex_);
+      band_program_.set("u_beta_template", 2);
+      band_program_.set("u_level1_center", centre);
+      band_program_.set("u_grown_half", 0.5f * float(n - 1) + float(band_w_));
+      band_program_.set("u_origin", origin_);
+      band_program_.set("u_origin_rel", rel(origin_));
+      glBindVertexArray(m.ring_vao);
+      glDrawElements(GL_TRIANGLES, m.ring_indices, GL_UNSIGNED_INT, nullptr);
+      band_tris = m.ring_indices / 3;
+      passes.push_back("band");
+    }
+
+    // Pass 3: Level0 into the frame, outside the Level1 square, depth-tested.
+    target.bind();
+    level0_program_.use();
+    scene_.bind_common(level0_program_, camera);
+    const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
+    const glm::ivec2 eye_sample(int(std::floor(camera.position.x / spacing.x)),
+                                int(std::floor(camera.position.y / spacing.y)));
+    level0_program_.set("u_eye_sample", eye_sample);
+    level0_program_.set("u_eye_frac", glm::vec3(camera.position.x - eye_sample.x * spacing.x,
+                                                camera.position.y - eye_sample.y * spacing.y, camera.position.z));
+    level0_program_.set("u_mode", 1);
+    level0_program_.set("u_alpha", 0.5f);
+    level0_program_.set("u_level1_box", box);
+    level0_program_.set("u_level1_center", centre);
+    glBindTextureUnit(3, band_color_);
+    glBindTextureUnit(4, band_depth_);
+    level0_program_.set("u_band", 3);
+    level0_program_.set("u_band_depth", 4);
+    level0_program_.set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
+    level0_program_.set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
+    glBindVertexArray(level0_vao_);
+    glDrawElements(GL_TRIANGLES, GLsizei(level0_.indices.size()), GL_UNSIGNED_INT, nullptr);
+    level0_tris = level0_.triangle_count;
+    passes.push_back("level0");
+
+    // Coverage count for next frame's size decision (results read next frame).
+    glBindFramebuffer(GL_FRAMEBUFFER, count_fbo_);
+    glViewport(0, 0, target.width(), target.height());
+    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, target.width());
+    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, target.height());
+    glDisable(GL_DEPTH_TEST);
+    count_program_.use();
+    glBindTextureUnit(5, target.color_texture());
+    count_program_.set("u_color", 5);
+    glBindVertexArray(empty_vao_);
+    for (int k = 0; k < 2; ++k) {
+      count_program_.set("u_threshold", k == 0 ? 0.75f : 0.25f);
+      glBeginQuery(GL_SAMPLES_PASSED, queries_[parity_][k]);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glEndQuery(GL_SAMPLES_PASSED);
+    }
+    query_pending_[parity_] = true;
+    parity_ ^= 1;
+    glEnable(GL_DEPTH_TEST);
+    target.bind();
+  }
+
+  stats.triangles = level0_tris + level1_tris + band_tris;
+  for (size_t k = 0; k < passes.size(); ++k) stats.passes += (k ? "+" : "") + passes[k];
+  stats.columns = {{"level1_n", double(n)},
+                   {"level1_ratio", last_ratio_},
+                   {"level0_tris", double(level0_tris)},
+                   {"level1_tris", double(level1_tris)},
+                   {"band_tris", double(band_tris)},
+                   {"band_w", double(band_w_)},
+                   {"e_x", look_at_.point.x},
+                   {"e_y", look_at_.point.y},
+                   {"e_hit", look_at_.hit ? 1.0 : 0.0}};
+  return stats;
+}
+
+}  // namespace ig::render

@@ -1,0 +1,97 @@
+#pragma once
+// The two-level terrain method (docs/twolevel.md):
+//   Level0: a static, view-independent ROAM mesh over the whole DEM.
+//   Level1: a full-resolution grid of N x N samples centred on E (where the
+//           view's centre ray meets the terrain), snapped to whole samples.
+// Passes: level1 (colour + depth into the frame, alpha 1), band (Level1's
+// grid grown by w_trans into an RGBA16F target: uv, beta, mask), level0
+// (clipped to outside the Level1 square, depth-tested against Level1, band
+// pixels shaded with the blended coordinate), then a coverage count whose
+// result steers next frame's Level1 size.
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gl/shader_program.h"
+#include "lod/level0_height_query.h"
+#include "lod/level1_size_controller.h"
+#include "lod/look_at_point.h"
+#include "lod/roam_level0_mesh.h"
+#include "render/grid_mesh.h"
+#include "render/terrain_method.h"
+#include "terrain/height_pyramid.h"
+
+namespace ig::render {
+
+struct TwoLevelOptions {
+  int level0_budget = 2048;       // Level0 triangles
+  double a1 = 0.50, a2 = 0.80;    // Level1 size thresholds on R
+  double alpha = 2000.0;          // band factor: w_trans = (r0 / r1) * alpha * w1
+  bool gaussian_beta = false;     // beta template: linear (default) or Gaussian
+  int max_level1 = 1025;          // top of the ladder (vertices a side)
+  int band_stride = 2;            // band geometry every k samples (it only carries uv)
+  double fallback_distance_m = 20000.0;  // E when the centre ray misses (see look_at_point.h)
+};
+
+class TwoLevelMethod final : public TerrainMethod {
+ public:
+  TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options = {});
+  ~TwoLevelMethod() override;
+  std::string name() const override { return "twolevel"; }
+  std::vector<std::string> column_names() const override;
+  void update(const Camera& camera) override;
+  MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
+
+  // State of the last update, for tests and logs.
+  int level1_size() const { return controller_.size(); }
+  const lod::LookAtPoint& look_at() const { return look_at_; }
+  glm::ivec2 level1_origin() const { return origin_; }
+  double last_ratio() const { return last_ratio_; }
+  const lod::Level0Mesh& level0() const { return level0_; }
+  int band_width_samples() const { return band_w_; }
+  void set_thresholds(double a1, double a2) { controller_.set_thresholds(a1, a2); }
+
+ private:
+  struct SizeMeshes;  // wall and band ring for one Level1 size, built on first use
+  SizeMeshes& meshes_for(int n, int band_w);
+  void ensure_band_target(int width, int height);
+  void upload_beta_template(int n, int band_w);
+  void update_walls(SizeMeshes& meshes, int n);
+  double read_previous_ratio();
+
+  const TerrainScene& scene_;
+  TwoLevelOptions options_;
+  gl::ShaderProgram grid_program_, level0_program_, band_program_, count_program_;
+  terrain::HeightPyramid pyramid_;
+  lod::Level0Mesh level0_;
+  lod::Level0HeightQuery level0_heights_;
+  GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
+  GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
+  std::map<std::pair<int, int>, std::unique_ptr<SizeMeshes>> size_meshes_;
+  lod::Level1SizeController controller_;
+
+  // Per-frame selection (update()).
+  lod::LookAtPoint look_at_;
+  glm::ivec2 origin_{0};
+  int band_w_ = 0;
+  double last_ratio_ = -1.0;
+  bool terrain_visible_ = false, band_visible_ = false;
+  std::vector<glm::ivec2> visible_blocks_;
+
+  // Band target (RGBA16F + depth), beta template, coverage queries.
+  GLuint band_fbo_ = 0, band_color_ = 0, band_depth_ = 0;
+  int band_target_w_ = 0, band_target_h_ = 0;
+  GLuint beta_tex_ = 0;
+  std::pair<int, int> beta_for_{0, 0};
+  GLuint count_fbo_ = 0, empty_vao_ = 0;
+  GLuint queries_[2][2] = {};  // [frame parity][level1, terrain]
+  bool query_pending_[2] = {false, false};
+  int parity_ = 0;
+  double level0_resolution_ = 0.0;  // r0 = Level0 vertices / DEM samples
+};
+
+}  // namespace ig::render
