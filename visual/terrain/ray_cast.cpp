@@ -216,12 +216,13 @@ std::optional<RayHit> make_hit(const Ray& r, double t, int i, int j) {
 }
 
 // An origin on the surface (vertically within kSurfaceEpsM, inside the
-// footprint) is a hit at t = 0 whatever the direction. Without this, an
-// origin on an edge with the ray leaving on the convex side (a touch, not a
-// crossing) would be hit or missed at the whim of rounding.
-// Same rule within one cell (the traversal's form of it): the origin is
-// inside the closed footprint of cell (i, j) and within kSurfaceEpsM
-// vertically of the cell's surface.
+// footprint) is a hit at t = 0 whatever the direction. Without this rule,
+// an origin on an edge with the ray leaving on the convex side (a touch, not
+// a crossing) would be hit or missed at the whim of rounding.
+//
+// The rule for one cell (cast_ray checks it on the cells whose box contains
+// the origin): the origin is inside the closed footprint of cell (i, j) and
+// within kSurfaceEpsM vertically of the cell's surface.
 bool origin_on_cell_surface(const Heightfield& hf, const Ray& r, int i, int j) {
   const double sx = hf.spacing_x_m, sy = hf.spacing_y_m;
   const double fx = (r.o.x - double(i) * sx) / sx, fy = (r.o.y - double(j) * sy) / sy;
@@ -233,6 +234,7 @@ bool origin_on_cell_surface(const Heightfield& hf, const Ray& r, int i, int j) {
   return std::abs(r.o.z - h) <= kSurfaceEpsM;
 }
 
+// The same rule for the whole footprint (cast_ray_dda checks it up front).
 std::optional<RayHit> origin_on_surface(const Heightfield& hf, const Ray& r) {
   const double ex = hf.extent_x_m(), ey = hf.extent_y_m();
   if (!(r.o.x >= 0 && r.o.x <= ex && r.o.y >= 0 && r.o.y <= ey)) return std::nullopt;
