@@ -276,12 +276,33 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   return t;
 }
 
+TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
+  require_object(j, path);
+  check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride"});
+  TwoLevelSpec t;
+  if (j.contains("level0_budget"))
+    t.level0_budget = static_cast<int>(get_integer(j["level0_budget"], child(path, "level0_budget"), 2, 10000000));
+  if (j.contains("a1")) t.a1 = get_number_in(j["a1"], child(path, "a1"), 0.0, 1.0);
+  if (j.contains("a2")) t.a2 = get_number_in(j["a2"], child(path, "a2"), 0.0, 1.0);
+  if (!(t.a1 < t.a2)) fail(child(path, "a2"), "must be greater than a1 (a1 " + num(t.a1) + ", a2 " + num(t.a2) + ")");
+  if (j.contains("alpha")) t.alpha = get_positive(j["alpha"], child(path, "alpha"), 1e9);
+  if (j.contains("beta")) t.beta = get_choice(j["beta"], child(path, "beta"), {"linear", "gaussian"});
+  if (j.contains("max_level1")) {
+    const std::string p = child(path, "max_level1");
+    const long long n = get_integer(j["max_level1"], p, 33, 1025);
+    if (((n - 1) & (n - 2)) != 0) fail(p, "must be one of 33, 65, 129, 257, 513, 1025" + got(j["max_level1"]));
+    t.max_level1 = static_cast<int>(n);
+  }
+  if (j.contains("band_stride")) t.band_stride = static_cast<int>(get_integer(j["band_stride"], child(path, "band_stride"), 1, 64));
+  return t;
+}
+
 RenderSpec parse_render(const json& j, const Context& ctx) {
   const std::string path = "render";
   require_object(j, path);
   check_keys(j, path,
              {"width", "height", "fov_y_deg", "near_m", "far_m", "method", "fog_visibility_m", "sky_zenith_rgb",
-              "sky_horizon_rgb", "sun_direction", "imagery", "frame_budget_ms", "vsync"});
+              "sky_horizon_rgb", "sun_direction", "imagery", "frame_budget_ms", "vsync", "twolevel"});
   RenderSpec r;
   if (j.contains("width")) r.width = static_cast<int>(get_integer(j["width"], child(path, "width"), 1, kMaxImageSide));
   if (j.contains("height")) r.height = static_cast<int>(get_integer(j["height"], child(path, "height"), 1, kMaxImageSide));
@@ -314,6 +335,7 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   if (j.contains("imagery")) r.imagery = get_file_path(j["imagery"], child(path, "imagery"), ctx);
   if (j.contains("frame_budget_ms")) r.frame_budget_ms = get_positive(j["frame_budget_ms"], child(path, "frame_budget_ms"), 1e6);
   if (j.contains("vsync")) r.vsync = get_bool(j["vsync"], child(path, "vsync"));
+  if (j.contains("twolevel")) r.twolevel = parse_twolevel(j["twolevel"], child(path, "twolevel"));
   return r;
 }
 

@@ -37,13 +37,24 @@ struct TerrainSpec {
   std::optional<GeneratorSpec> generator;
 };
 
+// Knobs of the two-level method (defaults: the paper's settings).
+struct TwoLevelSpec {
+  int level0_budget = 2048;   // Level0 ROAM triangles
+  double a1 = 0.50;           // Level1 grows when R < a1
+  double a2 = 0.80;           // Level1 shrinks when R > a2
+  double alpha = 2000.0;      // band factor in w_trans = (r0 / r1) * alpha * w1
+  std::string beta = "linear";  // band weight template: linear | gaussian
+  int max_level1 = 1025;      // top of the Level1 ladder (33, 65, ..., 1025)
+  int band_stride = 2;        // band geometry every k samples
+};
+
 struct RenderSpec {
   int width = 640;
   int height = 480;
   double fov_y_deg = 60.0;
   double near_m = 0.5;
   double far_m = 300000.0;
-  std::string method = "reference";
+  std::string method = "twolevel";
   double fog_visibility_m = 60000.0;  // distance where fog reaches ~98 %; 0 = off
   std::array<float, 3> sky_zenith_rgb{0.22f, 0.42f, 0.78f};
   std::array<float, 3> sky_horizon_rgb{0.70f, 0.80f, 0.92f};
@@ -51,6 +62,7 @@ struct RenderSpec {
   std::optional<std::string> imagery;  // optional RGB image draped over the DEM
   double frame_budget_ms = 16.667;     // frames slower than this are counted
   bool vsync = true;                   // windowed only
+  TwoLevelSpec twolevel;
 };
 
 struct ChannelSpec {

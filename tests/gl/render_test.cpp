@@ -1,4 +1,4 @@
-// Image tests of the reference renderer on the default scenario, headless
+// Image tests of the reference renderer on the default scenario's flight, headless
 // (EGL on llvmpipe), small frames.
 #include <gtest/gtest.h>
 
@@ -26,6 +26,7 @@ RunOptions small_headless() {
   o.height = kH;
   o.headless = true;
   o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
+  o.method = "reference";  // these tests are about the reference renderer
   return o;
 }
 

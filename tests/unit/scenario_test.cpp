@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -427,6 +428,55 @@ TEST(Scenario, ShippedScenariosParse) {
     }
   }
   if (parsed == 0) GTEST_SKIP() << "no scenario files in " << dir;
+}
+
+}  // namespace
+
+namespace {
+
+const char* kTwoLevelBase = R"({"terrain": {"generator": {"size": 65}}, "path": {"keys": [{"t": 0, "position": [0, 0, 100]}]},
+  "render": {"twolevel": %s}})";
+
+std::string with_twolevel(const std::string& body) {
+  char buf[1024];
+  std::snprintf(buf, sizeof buf, kTwoLevelBase, body.c_str());
+  return buf;
+}
+
+TEST(ScenarioTwoLevel, DefaultsAreThePapers) {
+  const auto s = ig::io::parse_scenario(with_twolevel("{}"));
+  EXPECT_EQ(s.render.method, "twolevel");
+  EXPECT_EQ(s.render.twolevel.level0_budget, 2048);
+  EXPECT_DOUBLE_EQ(s.render.twolevel.a1, 0.5);
+  EXPECT_DOUBLE_EQ(s.render.twolevel.a2, 0.8);
+}
+
+TEST(ScenarioTwoLevel, ReadsEveryKey) {
+  const auto s = ig::io::parse_scenario(with_twolevel(
+      R"({"level0_budget": 4096, "a1": 0.4, "a2": 0.9, "alpha": 500, "beta": "gaussian", "max_level1": 513, "band_stride": 1})"));
+  const auto& t = s.render.twolevel;
+  EXPECT_EQ(t.level0_budget, 4096);
+  EXPECT_DOUBLE_EQ(t.a1, 0.4);
+  EXPECT_DOUBLE_EQ(t.a2, 0.9);
+  EXPECT_DOUBLE_EQ(t.alpha, 500);
+  EXPECT_EQ(t.beta, "gaussian");
+  EXPECT_EQ(t.max_level1, 513);
+  EXPECT_EQ(t.band_stride, 1);
+}
+
+TEST(ScenarioTwoLevel, BadValuesNameTheirKey) {
+  auto error_of = [](const std::string& body) {
+    try {
+      ig::io::parse_scenario(with_twolevel(body));
+    } catch (const ig::io::ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of(R"({"a1": 0.9, "a2": 0.5})").find("render.twolevel.a2"), std::string::npos);
+  EXPECT_NE(error_of(R"({"max_level1": 100})").find("render.twolevel.max_level1"), std::string::npos);
+  EXPECT_NE(error_of(R"({"beta": "cubic"})").find("render.twolevel.beta"), std::string::npos);
+  EXPECT_NE(error_of(R"({"budget": 1})").find("render.twolevel.budget"), std::string::npos);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "render/twolevel_method.h"
 #include "scene_setup.h"
 
 namespace ig::app {
@@ -12,6 +13,17 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 glm::vec3 to_vec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
+render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& t) {
+  render::TwoLevelOptions o;
+  o.level0_budget = t.level0_budget;
+  o.a1 = t.a1;
+  o.a2 = t.a2;
+  o.alpha = t.alpha;
+  o.gaussian_beta = t.beta == "gaussian";
+  o.max_level1 = t.max_level1;
+  o.band_stride = t.band_stride;
+  return o;
+}
 }  // namespace
 
 ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
@@ -44,7 +56,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   shading.sky_horizon = to_vec3(r.sky_horizon_rgb);
   shading.fog_visibility_m = r.fog_visibility_m;
   scene_ = std::make_unique<render::TerrainScene>(heightfield_, shading, r.imagery);
-  method_ = render::make_method(r.method, *scene_, options_.shader_dir);
+  method_ = render::make_method(r.method, *scene_, options_.shader_dir, twolevel_options(r.twolevel));
   renderer_ = std::make_unique<render::FrameRenderer>(*scene_, *method_, options_.shader_dir);
 
   for (const auto& spec : scenario_.channels) {

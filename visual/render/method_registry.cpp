@@ -10,9 +10,9 @@ namespace ig::render {
 std::vector<std::string> method_names() { return {"twolevel", "reference"}; }
 
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
-                                           const std::string& shader_dir) {
+                                           const std::string& shader_dir, const TwoLevelOptions& twolevel) {
   if (name == "reference") return std::make_unique<ReferenceMethod>(scene, shader_dir);
-  if (name == "twolevel") return std::make_unique<TwoLevelMethod>(scene, shader_dir);
+  if (name == "twolevel") return std::make_unique<TwoLevelMethod>(scene, shader_dir, twolevel);
   std::string choices;
   for (const auto& n : method_names()) choices += (choices.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown method '" + name + "' (available: " + choices + ")");

@@ -35,10 +35,12 @@ class TerrainMethod {
   virtual MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) = 0;
 };
 
+struct TwoLevelOptions;  // render/twolevel_method.h
+
 // Names accepted by make_method().
 std::vector<std::string> method_names();
 // Throws std::invalid_argument naming the method and the choices.
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
-                                           const std::string& shader_dir);
+                                           const std::string& shader_dir, const TwoLevelOptions& twolevel);
 
 }  // namespace ig::render

@@ -1,0 +1,139 @@
+// Benchmark: the paper's Table 1 (Level1 size settling at 100 m above ground,
+// view pitch 15..90 deg below the horizon) and two-level vs reference frame
+// time on the same views. Prints a markdown table; asserts nothing.
+//
+//   IG_DEM_DIR=../shared/data/dem build/bin/bench_twolevel [--fov DEG] [--size WxH]
+//       [--lat DEG --lon DEG --heading DEG] [--settle N] [--frames N] [--reference-frames N]
+//
+// Defaults: 1280x1024, FOV 15 deg (the paper's), a point in the Sierra
+// Nevada DEM's interior (37.70 N, 118.70 W), heading 270 (west, into the range).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "ig/scenario_runner.h"
+#include "render/twolevel_method.h"
+#include "stats/frame_log.h"
+
+namespace {
+
+struct Row {
+  double pitch;
+  int size = 0, next_size = 0;
+  double ratio = 0, level0 = 0, level1 = 0, band = 0;
+  long long triangles = 0;
+  double twolevel_ms = 0, reference_ms = 0;
+  long long reference_triangles = 0;
+  std::string passes;
+};
+
+double arg_double(int argc, char** argv, const std::string& flag, double fallback) {
+  for (int k = 1; k + 1 < argc; ++k)
+    if (flag == argv[k]) return std::atof(argv[k + 1]);
+  return fallback;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* dem_dir = std::getenv("IG_DEM_DIR");
+  if (!dem_dir) {
+    std::fprintf(stderr, "bench_twolevel: set IG_DEM_DIR to the folder holding sierra_nevada_3arcsec_4097.tif\n");
+    return 2;
+  }
+  const double fov = arg_double(argc, argv, "--fov", 15.0);
+  const double lat = arg_double(argc, argv, "--lat", 37.70), lon = arg_double(argc, argv, "--lon", -118.70);
+  const double heading = arg_double(argc, argv, "--heading", 270.0);
+  const int settle = int(arg_double(argc, argv, "--settle", 30));
+  const int frames = int(arg_double(argc, argv, "--frames", 20));
+  const int ref_frames = int(arg_double(argc, argv, "--reference-frames", 3));
+  int width = 1280, height = 1024;
+  for (int k = 1; k + 1 < argc; ++k)
+    if (std::string(argv[k]) == "--size") std::sscanf(argv[k + 1], "%dx%d", &width, &height);
+
+  const std::vector<double> pitches = {15, 30, 45, 60, 75, 90};
+  ig::io::Scenario s;
+  s.name = "table1";
+  s.terrain.file = std::string(dem_dir) + "/sierra_nevada_3arcsec_4097.tif";
+  s.render.width = width;
+  s.render.height = height;
+  s.render.fov_y_deg = fov;
+  s.channels = {ig::io::ChannelSpec{}};
+  s.path.frame = ig::io::PositionFrame::Geodetic;
+  s.path.altitude = ig::io::AltitudeMode::AboveGround;
+  for (size_t k = 0; k < pitches.size(); ++k)
+    s.path.keys.push_back({double(k), {lat, lon, 100.0}, heading, -pitches[k], 0.0});
+  s.time_step_s = 1.0;
+  s.duration_s = double(pitches.size() - 1);
+
+  std::vector<Row> rows(pitches.size());
+  ig::app::RunOptions o;
+  o.headless = true;
+  try {
+    {
+      o.method = "twolevel";
+      ig::app::ScenarioRunner runner(s, o);
+      auto* tl = dynamic_cast<ig::render::TwoLevelMethod*>(&runner.method());
+      std::printf("renderer: %s | %s\n", runner.context().gl_renderer().c_str(), runner.context().gl_version().c_str());
+      std::printf("dem: %s (%dx%d), Level0: %d triangles built in %.0f ms, max error %.0f m\n",
+                  runner.heightfield().source.c_str(), runner.heightfield().width, runner.heightfield().height,
+                  tl->level0().triangle_count, tl->level0().build_ms, tl->level0().max_error_m);
+      for (size_t k = 0; k < pitches.size(); ++k) {
+        for (int f = 0; f < settle; ++f) runner.render_frame(int(k));
+        std::vector<double> ms;
+        Row& r = rows[k];
+        r.pitch = pitches[k];
+        double ratio_sum = 0;
+        for (int f = 0; f < frames; ++f) {
+          runner.render_frame(int(k));
+          const auto& ch = runner.channels()[0];
+          ms.push_back(ch.render_ms);
+          ratio_sum += tl->last_ratio();
+          r.size = tl->level1_size();
+          r.triangles = ch.last.method.triangles;
+          r.passes = ch.last.method.passes;
+          for (const auto& [name, v] : ch.last.method.columns) {
+            if (name == "level0_tris") r.level0 = v;
+            if (name == "level1_tris") r.level1 = v;
+            if (name == "band_tris") r.band = v;
+          }
+        }
+        r.ratio = ratio_sum / frames;
+        r.twolevel_ms = ig::stats::percentiles(ms).median;
+        runner.render_frame(int(k));
+        r.next_size = tl->level1_size();
+        std::fprintf(stderr, "twolevel pitch %.0f: N=%d R=%.2f %.1f ms\n", r.pitch, r.size, r.ratio, r.twolevel_ms);
+      }
+    }
+    if (ref_frames > 0) {
+      o.method = "reference";
+      ig::app::ScenarioRunner runner(s, o);
+      for (size_t k = 0; k < pitches.size(); ++k) {
+        std::vector<double> ms;
+        for (int f = 0; f < ref_frames; ++f) {
+          runner.render_frame(int(k));
+          ms.push_back(runner.channels()[0].render_ms);
+        }
+        rows[k].reference_ms = ig::stats::percentiles(ms).median;
+        rows[k].reference_triangles = runner.channels()[0].last.method.triangles;
+        std::fprintf(stderr, "reference pitch %.0f: %.1f ms\n", pitches[k], rows[k].reference_ms);
+      }
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_twolevel: %s\n", e.what());
+    return 1;
+  }
+
+  std::printf("\n%dx%d, FOV %.0f deg, 100 m above ground at %.2f, %.2f, heading %.0f; settle %d frames, median of %d\n\n",
+              width, height, fov, lat, lon, heading, settle, frames);
+  std::printf("| pitch below horizon | Level1 N | R | triangles (L0 + L1 + band) | two-level ms (fps) | next N | reference ms | reference triangles | speed-up |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (const Row& r : rows)
+    std::printf("| %.0f deg | %d | %.0f %% | %lld (%.0f + %.0f + %.0f) | %.1f (%.0f) | %d | %.1f | %lld | %.1fx |\n", r.pitch, r.size,
+                100.0 * r.ratio, r.triangles, r.level0, r.level1, r.band, r.twolevel_ms, 1000.0 / r.twolevel_ms,
+                r.next_size, r.reference_ms, r.reference_triangles,
+                r.reference_ms > 0 ? r.reference_ms / r.twolevel_ms : 0.0);
+  return 0;
+}
