@@ -221,7 +221,7 @@ std::string get_file_path(const json& j, const std::string& path, const Context&
 
 GeneratorSpec parse_generator(const json& j, const std::string& path) {
   require_object(j, path);
-  check_keys(j, path, {"size", "seed", "spacing_m", "relief_m", "base_m", "octaves", "ridge_weight"});
+  check_keys(j, path, {"size", "seed", "spacing_m", "relief_m", "base_m", "octaves", "ridge_weight", "origin"});
   GeneratorSpec g;
   if (j.contains("size")) {
     const std::string p = child(path, "size");
@@ -242,6 +242,13 @@ GeneratorSpec parse_generator(const json& j, const std::string& path) {
   if (j.contains("base_m")) g.base_m = get_number_in(j["base_m"], child(path, "base_m"), -1e5, 1e5);
   if (j.contains("octaves")) g.octaves = static_cast<int>(get_integer(j["octaves"], child(path, "octaves"), 1, 20));
   if (j.contains("ridge_weight")) g.ridge_weight = get_number_in(j["ridge_weight"], child(path, "ridge_weight"), 0.0, 1.0);
+  if (j.contains("origin")) {
+    const std::string p = child(path, "origin");
+    if (!j["origin"].is_array() || j["origin"].size() != 2) fail(p, "must be [lat_deg, lon_deg]" + got(j["origin"]));
+    const double lat = get_number_in(j["origin"][0], element(p, 0), -85.0, 85.0);
+    const double lon = get_number_in(j["origin"][1], element(p, 1), -180.0, 180.0);
+    g.origin_lat_lon = std::array<double, 2>{lat, lon};
+  }
   return g;
 }
 

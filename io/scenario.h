@@ -25,6 +25,9 @@ struct GeneratorSpec {
   double base_m = 0.0;        // added to every sample
   int octaves = 9;
   double ridge_weight = 0.5;  // 0 = pure fBm, 1 = pure ridged noise
+  // WGS84 latitude/longitude of the south-west sample: georeferences the
+  // generated terrain so it takes geodetic poses (CIGI, FlightGear).
+  std::optional<std::array<double, 2>> origin_lat_lon;
 };
 
 struct TerrainSpec {

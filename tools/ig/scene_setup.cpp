@@ -19,7 +19,11 @@ terrain::Heightfield load_terrain(const io::TerrainSpec& spec) {
     p.base_m = g.base_m;
     p.octaves = g.octaves;
     p.ridge_weight = g.ridge_weight;
-    return terrain::generate_synthetic_terrain(p);
+    terrain::Heightfield hf = terrain::generate_synthetic_terrain(p);
+    if (g.origin_lat_lon)
+      hf.georef = terrain::make_geographic_georef((*g.origin_lat_lon)[0], (*g.origin_lat_lon)[1], hf.spacing_x_m,
+                                                  hf.spacing_y_m);
+    return hf;
   }
   terrain::DemLoadOptions o;
   o.encoding = spec.encoding;

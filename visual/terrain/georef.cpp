@@ -1,5 +1,7 @@
 #include "terrain/georef.h"
 
+#include "terrain/dem_loader.h"
+
 #include <ogr_spatialref.h>
 
 #include <cmath>
@@ -26,6 +28,22 @@ std::optional<glm::dvec2> geodetic_to_local(const Heightfield& hf, double lat_de
   const double i = (g[5] * dx - g[2] * dy) / det;
   const double j = (-g[4] * dx + g[1] * dy) / det;
   return glm::dvec2(i * hf.spacing_x_m, j * hf.spacing_y_m);
+}
+
+GeoReference make_geographic_georef(double lat0_deg, double lon0_deg, double spacing_x_m, double spacing_y_m) {
+  OGRSpatialReference wgs84;
+  wgs84.SetWellKnownGeogCS("WGS84");
+  char* wkt = nullptr;
+  wgs84.exportToWkt(&wkt);
+  GeoReference g;
+  g.crs_wkt = wkt ? wkt : "";
+  CPLFree(wkt);
+  g.crs_name = "EPSG:4326";
+  g.geographic = true;
+  const MetresPerAngle m = metres_per_angle(lat0_deg);
+  // (i, j) -> (lon, lat): GDAL-style affine for our south-up sample indices.
+  g.grid_to_crs = {lon0_deg, spacing_x_m / m.east, 0.0, lat0_deg, 0.0, spacing_y_m / m.north};
+  return g;
 }
 
 }  // namespace ig::terrain

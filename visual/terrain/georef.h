@@ -15,4 +15,10 @@ namespace ig::terrain {
 // the grid's own (centre-latitude) spacing, consistent with the rendered mesh.
 std::optional<glm::dvec2> geodetic_to_local(const Heightfield& hf, double lat_deg, double lon_deg);
 
+// A WGS84 geographic georeference for a grid whose south-west sample sits at
+// (lat0, lon0) with the given ground spacing (degrees per sample from the
+// ellipsoid at lat0): lets generated terrain take geodetic poses (CIGI,
+// FlightGear) like a real DEM.
+GeoReference make_geographic_georef(double lat0_deg, double lon0_deg, double spacing_x_m, double spacing_y_m);
+
 }  // namespace ig::terrain
