@@ -15,6 +15,8 @@ packages=(
   gnuplot-nox
   # test helpers
   python3
+  # fuzzing
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -1,0 +1,61 @@
+// Writes a small seed corpus for the fuzz targets: make_seeds OUT_DIR
+// creates OUT_DIR/{native,cigi,fgfdm}/seed_NN from valid encodings.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "io/wire/cigi.h"
+#include "io/wire/fgnetfdm.h"
+#include "io/wire/native.h"
+
+namespace {
+
+using ig::io::wire::PoseMessage;
+
+void write(const std::filesystem::path& dir, int i, const std::uint8_t* p, std::size_t n) {
+  std::filesystem::create_directories(dir);
+  char name[32];
+  std::snprintf(name, sizeof name, "seed_%02d", i);
+  std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(p), static_cast<std::streamsize>(n));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: make_seeds OUT_DIR\n");
+    return 2;
+  }
+  const std::filesystem::path out = argv[1];
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 8; ++i) {
+    PoseMessage m;
+    m.frame = (i & 1) ? PoseMessage::Frame::Local : PoseMessage::Frame::Geodetic;
+    m.position = (i & 1) ? glm::dvec3(u(rng) * 1e5, u(rng) * 1e5, 500 + u(rng) * 400)
+                         : glm::dvec3(u(rng) * 80, u(rng) * 170, 1000 + u(rng) * 900);
+    m.heading_deg = 180 + 179 * u(rng);
+    m.pitch_deg = 80 * u(rng);
+    m.roll_deg = 170 * u(rng);
+    m.has_rates = (i & 2) != 0;
+    m.body_rates_dps = {u(rng) * 10, u(rng) * 10, u(rng) * 10};
+    m.has_velocity = (i & 4) != 0;
+    m.velocity_mps = {u(rng) * 100, u(rng) * 100, u(rng) * 10};
+    m.has_sequence = true;
+    m.sequence = static_cast<std::uint32_t>(i);
+    m.has_sender_time = (i & 1) == 0;
+    m.sender_time_s = 100 + i;
+    const auto n = ig::io::wire::encode_native(m);
+    write(out / "native", i, n.data(), n.size());
+    m.frame = PoseMessage::Frame::Geodetic;
+    m.position = glm::dvec3(u(rng) * 80, u(rng) * 170, 1000 + u(rng) * 900);
+    const auto c = ig::io::wire::encode_cigi_host_datagram(static_cast<std::uint32_t>(i), 1, m, (i & 1) != 0);
+    write(out / "cigi", i, c.data(), c.size());
+    const auto f = ig::io::wire::encode_fgnetfdm(m);
+    write(out / "fgfdm", i, f.data(), f.size());
+  }
+  return 0;
+}
