@@ -1,0 +1,375 @@
+#include "io/filter/pose_filter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "io/filter/quat_util.h"
+
+namespace ig::io {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegToRad = kPi / 180.0;
+// Consecutive samples further apart than this are not differenced for
+// extrapolation rates or used for the packet interval estimate.
+constexpr double kMaxDiffGapS = 0.5;
+
+bool finite_sample(const PoseSample& s) {
+  using quat::finite;
+  if (!std::isfinite(s.receive_time_s)) return false;
+  if (s.sender_time_s && !std::isfinite(*s.sender_time_s)) return false;
+  if (!finite(s.position) || !finite(s.attitude)) return false;
+  if (s.velocity_mps && !finite(*s.velocity_mps)) return false;
+  if (s.body_rates_dps && !finite(*s.body_rates_dps)) return false;
+  const double n2 = glm::dot(s.attitude, s.attitude);
+  return n2 > 1e-12 && std::isfinite(n2);
+}
+
+}  // namespace
+
+PoseFilter::PoseFilter(const PoseFilterOptions& options) : opt_(options) {
+  // Sanitize the knobs so that nothing below can divide by zero or go NaN.
+  auto fin = [](double v, double dflt) { return std::isfinite(v) ? v : dflt; };
+  opt_.playout_intervals = std::max(0.0, fin(opt_.playout_intervals, 2.0));
+  opt_.jitter_factor = std::max(0.0, fin(opt_.jitter_factor, 1.0));
+  opt_.min_playout_delay_s = std::max(0.0, fin(opt_.min_playout_delay_s, 0.0));
+  opt_.max_playout_delay_s = std::max(opt_.min_playout_delay_s, fin(opt_.max_playout_delay_s, 0.1));
+  opt_.playout_delay_s = fin(opt_.playout_delay_s, -1.0);
+  if (!(opt_.nominal_interval_s > 0.0) || !std::isfinite(opt_.nominal_interval_s))
+    opt_.nominal_interval_s = 1.0 / 60.0;
+  if (!(opt_.offset_window_s > 0.0)) opt_.offset_window_s = 2.0;
+  opt_.clock_slew = std::clamp(fin(opt_.clock_slew, 0.1), 0.0, 0.9);
+  opt_.clock_snap_s = std::max(0.0, fin(opt_.clock_snap_s, 0.25));
+  opt_.max_extrapolation_s = std::max(0.0, fin(opt_.max_extrapolation_s, 0.2));
+  if (!(opt_.time_jump_s > 0.0)) opt_.time_jump_s = 1.0;
+  opt_.reorder_window = std::max<std::uint32_t>(1, std::min<std::uint32_t>(opt_.reorder_window, 0x7fffffffu));
+  interval_ = opt_.nominal_interval_s;
+  reset();
+}
+
+void PoseFilter::reset() {
+  head_ = count_ = 0;
+  off_next_ = off_count_ = 0;
+  offset_ = jitter_ = 0.0;
+  seen_next_ = seen_count_ = 0;
+  clock_init_ = false;
+  have_output_ = false;
+  last_tau_ = -std::numeric_limits<double>::infinity();
+}
+
+double PoseFilter::playout_delay_s() const {
+  if (opt_.playout_delay_s >= 0.0) return opt_.playout_delay_s;
+  const double d = opt_.playout_intervals * interval_ + opt_.jitter_factor * jitter_;
+  return std::clamp(d, opt_.min_playout_delay_s, opt_.max_playout_delay_s);
+}
+
+void PoseFilter::note_offset(double t, double recv) {
+  off_t_[off_next_] = t;
+  off_v_[off_next_] = recv - t;
+  off_next_ = (off_next_ + 1) % kOffsetWindow;
+  off_count_ = std::min(off_count_ + 1, kOffsetWindow);
+  const double newest = at(count_ - 1).t;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int k = 0; k < off_count_; ++k) {
+    if (off_t_[k] < newest - opt_.offset_window_s) continue;
+    lo = std::min(lo, off_v_[k]);
+    hi = std::max(hi, off_v_[k]);
+  }
+  if (!(lo <= hi)) lo = hi = recv - t;  // everything outside the window
+  offset_ = lo;
+  jitter_ = hi - lo;
+}
+
+void PoseFilter::note_seen(std::uint32_t seq, double t) {
+  seen_seq_[seen_next_] = seq;
+  seen_t_[seen_next_] = t;
+  seen_next_ = (seen_next_ + 1) % kSeenRing;
+  seen_count_ = std::min(seen_count_ + 1, kSeenRing);
+}
+
+bool PoseFilter::seen(std::uint32_t seq, double t) const {
+  for (int k = 0; k < seen_count_; ++k) {
+    if (stream_has_seq_ ? seen_seq_[k] == seq : seen_t_[k] == t) return true;
+  }
+  return false;
+}
+
+void PoseFilter::restart(const Entry& e) {
+  reset();
+  at(0) = e;
+  count_ = 1;
+  newest_seq_ = e.seq;
+  note_seen(e.seq, e.t);
+  note_offset(e.t, e.recv);
+  ++counters_.accepted;
+}
+
+void PoseFilter::append(const Entry& e) {
+  const Entry& prev = at(count_ - 1);
+  const double dt = e.t - prev.t;
+  const double steps = stream_has_seq_ ? double(std::uint32_t(e.seq - prev.seq)) : 1.0;
+  if (dt > 0.0 && steps >= 1.0 && dt < kMaxDiffGapS) {
+    const double per = dt / steps;
+    interval_ = interval_known_ ? interval_ + 0.1 * (per - interval_) : per;
+    interval_known_ = true;
+  }
+  if (count_ == kCapacity) {  // drop the oldest
+    head_ = (head_ + 1) % kCapacity;
+    --count_;
+  }
+  at(count_) = e;
+  ++count_;
+  newest_seq_ = e.seq;
+  note_seen(e.seq, e.t);
+  note_offset(e.t, e.recv);
+  ++counters_.accepted;
+}
+
+bool PoseFilter::insert_sorted(const Entry& e) {
+  // Position of the first entry with t > e.t; equal times are not inserted.
+  int k = count_;
+  while (k > 0 && at(k - 1).t > e.t) --k;
+  if (k > 0 && at(k - 1).t == e.t) return false;
+  if (k == 0 && count_ == kCapacity) return false;  // older than all we keep
+  if (count_ == kCapacity) {
+    head_ = (head_ + 1) % kCapacity;
+    --count_;
+    --k;
+  }
+  for (int m = count_; m > k; --m) at(m) = at(m - 1);
+  at(k) = e;
+  ++count_;
+  note_offset(e.t, e.recv);
+  ++counters_.accepted;
+  ++counters_.late_inserted;
+  return true;
+}
+
+bool PoseFilter::push(const PoseSample& s) {
+  ++counters_.received;
+  if (!finite_sample(s)) {
+    ++counters_.non_finite;
+    return false;
+  }
+  Entry e;
+  e.t = s.sender_time_s ? *s.sender_time_s : s.receive_time_s;
+  e.recv = s.receive_time_s;
+  e.seq = s.sequence.value_or(0);
+  e.pos = s.position;
+  e.att = glm::normalize(s.attitude);
+  if (s.velocity_mps) {
+    e.vel = *s.velocity_mps;
+    e.has_vel = true;
+  }
+  if (s.body_rates_dps) {
+    const glm::dvec3 r = *s.body_rates_dps * kDegToRad;  // (p, q, r)
+    e.omega = glm::dvec3(r[1], r[0], -r[2]);               // body (x, y, z)
+    e.has_omega = true;
+  }
+
+  const bool has_sender = s.sender_time_s.has_value();
+  const bool has_seq = s.sequence.has_value();
+  if (count_ == 0) {
+    stream_has_sender_ = has_sender;
+    stream_has_seq_ = has_seq;
+    restart(e);
+    return true;
+  }
+  if (has_sender != stream_has_sender_ || has_seq != stream_has_seq_) {
+    // The time base or numbering changed: a different sender. Start over.
+    ++counters_.time_jumps;
+    stream_has_sender_ = has_sender;
+    stream_has_seq_ = has_seq;
+    restart(e);
+    return true;
+  }
+
+  const Entry& newest = at(count_ - 1);
+  // Keep neighbouring quaternions in one hemisphere (slerp, differencing).
+  if (glm::dot(newest.att, e.att) < 0.0) e.att = -e.att;
+
+  bool stale = false;
+  bool seq_restart = false;
+  if (stream_has_seq_) {
+    const std::int32_t d = static_cast<std::int32_t>(e.seq - newest_seq_);  // wraps correctly
+    if (d <= 0 && d > -static_cast<std::int64_t>(opt_.reorder_window)) {
+      stale = true;
+    } else if (d <= 0) {
+      seq_restart = true;
+    }
+  } else if (e.t <= newest.t) {
+    stale = true;
+  }
+  if (stale && seen(e.seq, e.t)) {
+    ++counters_.duplicates;
+    return false;
+  }
+  // Sender clock jump: sender time off from the progression expected from the
+  // receive clock. (Receive-time-only streams never trigger this.)
+  if (!stale || !stream_has_seq_) {
+    const double expected = newest.t + (e.recv - newest.recv);
+    if (std::fabs(e.t - expected) > opt_.time_jump_s) {
+      ++counters_.time_jumps;
+      restart(e);
+      return true;
+    }
+  }
+  if (seq_restart) {
+    if (e.t <= newest.t) {  // numbering restarted but time did not advance: stale
+      stale = true;
+    } else {
+      ++counters_.sequence_resets;
+      append(e);
+      return true;
+    }
+  }
+  if (stale) {
+    ++counters_.out_of_order;
+    note_seen(e.seq, e.t);
+    if (opt_.insert_late_packets && e.t > last_tau_) return insert_sorted(e);
+    return false;
+  }
+  if (e.t == newest.t) {
+    // A newer sequence number with the same sender time: last writer wins.
+    at(count_ - 1) = e;
+    newest_seq_ = e.seq;
+    note_seen(e.seq, e.t);
+    ++counters_.accepted;
+    return true;
+  }
+  append(e);
+  return true;
+}
+
+glm::dvec3 PoseFilter::extrap_velocity() const {
+  const Entry& n = at(count_ - 1);
+  if (n.has_vel) return n.vel;
+  if (!opt_.derive_missing_rates || count_ < 2) return glm::dvec3(0.0);
+  const Entry& p = at(count_ - 2);
+  const double h = n.t - p.t;
+  if (!(h > 0.0) || h > kMaxDiffGapS) return glm::dvec3(0.0);
+  return (n.pos - p.pos) / h;
+}
+
+glm::dvec3 PoseFilter::extrap_omega() const {
+  const Entry& n = at(count_ - 1);
+  if (n.has_omega) return n.omega;
+  if (!opt_.derive_missing_rates || count_ < 2) return glm::dvec3(0.0);
+  const Entry& p = at(count_ - 2);
+  const double h = n.t - p.t;
+  if (!(h > 0.0) || h > kMaxDiffGapS) return glm::dvec3(0.0);
+  return quat::log_rotvec(glm::conjugate(p.att) * n.att) / h;  // body frame
+}
+
+FilteredPose PoseFilter::interpolate(const Entry& a, const Entry& b, double tau) const {
+  FilteredPose out;
+  const double h = b.t - a.t;
+  const double s = std::clamp((tau - a.t) / h, 0.0, 1.0);
+  if (a.has_vel && b.has_vel) {
+    const double s2 = s * s, s3 = s2 * s;
+    out.position = a.pos * (2 * s3 - 3 * s2 + 1) + a.vel * (h * (s3 - 2 * s2 + s)) +
+                   b.pos * (-2 * s3 + 3 * s2) + b.vel * (h * (s3 - s2));
+  } else {
+    out.position = a.pos + (b.pos - a.pos) * s;
+  }
+  if (a.has_omega && b.has_omega) {
+    // The relative rotation is ambiguous by whole turns (and q ~ -q): pick
+    // the branch closest to what the body rates integrate to over the gap.
+    glm::dvec3 rel = quat::log_rotvec(glm::conjugate(a.att) * b.att);  // |rel| <= pi
+    const glm::dvec3 want = (a.omega + b.omega) * (0.5 * h);
+    const double len = glm::length(rel);
+    glm::dvec3 axis = len > 1e-9 ? rel / len : glm::dvec3(0.0);
+    if (len <= 1e-9) {
+      const double wl = glm::length(want);
+      if (wl > 1e-9) axis = want / wl;
+    }
+    glm::dvec3 best = rel;
+    double best_d = glm::length(want - rel);
+    for (int k = -3; k <= 3; ++k) {
+      if (k == 0) continue;
+      const glm::dvec3 cand = rel + axis * (2.0 * kPi * k);
+      const double d = glm::length(want - cand);
+      if (d < best_d) {
+        best_d = d;
+        best = cand;
+      }
+    }
+    out.attitude = glm::normalize(a.att * quat::exp_rotvec(best * s));
+  } else {
+    out.attitude = quat::slerp_short(a.att, b.att, s);
+  }
+  out.mode = FilteredPose::Interpolating;
+  return out;
+}
+
+std::optional<FilteredPose> PoseFilter::sample(double now_s) {
+  if (count_ == 0) return std::nullopt;
+  if (!std::isfinite(now_s)) now_s = clock_init_ ? last_now_ : at(count_ - 1).recv;
+
+  // Playout point: now - (offset + delay), the sum slewed for a smooth timeline.
+  const double delay = playout_delay_s();
+  const double target = offset_ + delay;
+  if (!clock_init_) {
+    budget_ = target;
+    clock_init_ = true;
+  } else {
+    const double dt = now_s - last_now_;
+    if (dt > 0.0 && dt < 1.0) {
+      const double step = opt_.clock_slew * dt;
+      budget_ += std::clamp(target - budget_, -step, step);
+    }
+    if (std::fabs(target - budget_) > opt_.clock_snap_s) budget_ = target;
+  }
+  last_now_ = now_s;
+  const double tau = now_s - budget_;
+
+  FilteredPose out;
+  const Entry& oldest = at(0);
+  const Entry& newest = at(count_ - 1);
+  if (tau <= oldest.t) {
+    // Before the first buffered sample (start-up, or after a reset).
+    out.position = oldest.pos;
+    out.attitude = oldest.att;
+    out.mode = FilteredPose::Holding;
+    out.age_s = now_s - oldest.recv;
+  } else if (tau <= newest.t) {
+    int k = count_ - 1;
+    while (k > 0 && at(k - 1).t >= tau) --k;  // at(k-1).t < tau <= at(k).t
+    out = interpolate(at(k - 1), at(k), tau);
+    out.age_s = now_s - at(k).recv;
+  } else {
+    const double dt = tau - newest.t;
+    const double de = std::min(dt, opt_.max_extrapolation_s);
+    out.position = newest.pos + extrap_velocity() * de;
+    out.attitude = glm::normalize(newest.att * quat::exp_rotvec(extrap_omega() * de));
+    out.mode = dt <= opt_.max_extrapolation_s ? FilteredPose::Extrapolating : FilteredPose::Holding;
+    out.age_s = now_s - newest.recv;
+  }
+  out.sample_time_s = tau;
+  out.render_time_s = tau + offset_;
+  out.playout_delay_s = delay;
+
+  if (!quat::finite(out.position) || !quat::finite(out.attitude) || !std::isfinite(out.age_s) ||
+      !std::isfinite(out.sample_time_s)) {
+    // Cannot happen with finite inputs; never hand NaN to the renderer.
+    if (have_output_) {
+      out = last_out_;
+    } else {
+      out.position = newest.pos;
+      out.attitude = newest.att;
+      out.age_s = 0.0;
+      out.sample_time_s = newest.t;
+      out.render_time_s = newest.recv;
+    }
+    out.mode = FilteredPose::Holding;
+  }
+  if (out.mode == FilteredPose::Extrapolating) ++counters_.extrapolations;
+  if (out.mode == FilteredPose::Holding) ++counters_.holds;
+  last_tau_ = std::max(last_tau_, tau);
+  last_out_ = out;
+  have_output_ = true;
+  return out;
+}
+
+}  // namespace ig::io

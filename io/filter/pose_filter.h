@@ -1,0 +1,200 @@
+#pragma once
+// Pose intake filter: turns a jittery, lossy, possibly reordered stream of
+// host pose packets into one smooth pose per rendered frame.
+//
+//  * drops duplicates, stale (out-of-order) and non-finite packets, counting
+//    each; late packets that are still ahead of the playout point are
+//    inserted instead of dropped (PoseFilterOptions::insert_late_packets);
+//  * maps the sender's clock onto the IG clock with a min-filtered offset and
+//    plays the stream out a small, adaptive delay behind the newest data
+//    (jitter buffer), interpolating between the two samples around the
+//    playout instant: position by cubic Hermite when both carry velocities,
+//    else linearly; attitude by slerp (short arc, or the arc the body rates
+//    say when both carry rates, so 720 deg/s rolls survive packet loss);
+//  * extrapolates from the newest sample with its velocity and body rates for
+//    at most max_extrapolation_s when data runs dry, then holds that pose;
+//  * resets on sender clock jumps;
+//  * never outputs NaN/Inf.
+// Frames and units: see PoseSample. Full description: docs/pose-filter.md.
+// Not thread-safe: push() and sample() from the same thread (or lock).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+namespace ig::io {
+
+struct PoseSample {
+  // IG clock (the clock sample() is called with), seconds, when the packet
+  // was received. Should be taken per packet, not per frame poll.
+  double receive_time_s = 0.0;
+  // Sender's clock, seconds, when the pose was valid. Strongly recommended:
+  // without it packets are placed at their receive time (jitter shows up as
+  // motion error) and clock jumps cannot be detected.
+  std::optional<double> sender_time_s;
+  // Packet counter, incremented by one per packet sent; wraps at 2^32.
+  std::optional<std::uint32_t> sequence;
+  // Terrain-local ENU metres (x east, y north, z up); convert geodetic first
+  // (io/filter/geodesy.h).
+  glm::dvec3 position{0.0};
+  // Body -> world rotation in the io/pose.h convention (body x right, y
+  // forward, z up; attitude_from_hpr). Need not be normalised; zero -> dropped.
+  glm::dquat attitude{1.0, 0.0, 0.0, 0.0};
+  // World (ENU) velocity, metres per second.
+  std::optional<glm::dvec3> velocity_mps;
+  // Body angular rates, degrees per second, aerospace convention:
+  //   [0] roll rate p:  about body +y (forward), right-handed: right wing down +
+  //   [1] pitch rate q: about body +x (right), right-handed: nose up +
+  //   [2] yaw rate r:   nose right +, i.e. LEFT-handed about body +z (up), the
+  //                     sense in which heading increases.
+  // So the body-frame angular velocity vector (x, y, z) is (q, p, -r).
+  // These are body rates (angular velocity), not Euler-angle rates.
+  std::optional<glm::dvec3> body_rates_dps;
+  std::string source;  // for logs; not used by the filter
+};
+
+struct FilteredPose {
+  glm::dvec3 position{0.0};
+  glm::dquat attitude{1.0, 0.0, 0.0, 0.0};  // unit
+  double age_s = 0.0;  // now - receive time of the newest sample used
+  enum Mode { Interpolating, Extrapolating, Holding } mode = Holding;
+  // The instant the pose represents, in the stream's time base (sender clock
+  // when the stream carries sender times, else the IG receive clock) ...
+  double sample_time_s = 0.0;
+  // ... and that instant on the IG clock (sample_time_s + clock offset).
+  double render_time_s = 0.0;
+  double playout_delay_s = 0.0;  // the delay in effect for this output
+};
+
+struct PoseFilterCounters {
+  std::uint64_t received = 0;        // push() calls
+  std::uint64_t accepted = 0;        // samples that entered the buffer (incl. late_inserted)
+  std::uint64_t duplicates = 0;      // same sequence (or sender time) seen before: dropped
+  std::uint64_t out_of_order = 0;    // older than the newest accepted, not a duplicate
+  std::uint64_t late_inserted = 0;   // ... of which still ahead of playout: inserted, used
+  std::uint64_t non_finite = 0;      // NaN/Inf anywhere, or a zero quaternion: dropped
+  std::uint64_t time_jumps = 0;      // sender clock jumps (and time-base changes): reset
+  std::uint64_t sequence_resets = 0;  // sequence restarted (jumped back > reorder_window)
+  std::uint64_t extrapolations = 0;  // sample() outputs in mode Extrapolating
+  std::uint64_t holds = 0;           // sample() outputs in mode Holding
+};
+
+struct PoseFilterOptions {
+  // Playout delay: >= 0 fixes it (seconds); negative (default) adapts it to
+  //   playout_intervals * packet interval + jitter_factor * jitter,
+  // clamped to [min_playout_delay_s, max_playout_delay_s]. The packet
+  // interval is estimated from sender time deltas per sequence step; jitter
+  // is the spread (max - min) of receive-minus-sender time over
+  // offset_window_s.
+  double playout_delay_s = -1.0;
+  double playout_intervals = 2.0;
+  double jitter_factor = 1.0;
+  double min_playout_delay_s = 0.0;
+  double max_playout_delay_s = 0.100;
+  double nominal_interval_s = 1.0 / 60.0;  // until two packets have been seen
+  // Sender -> IG clock offset: the minimum of (receive - sender time) over
+  // this much recent sender time (robust to one-sided network jitter).
+  double offset_window_s = 2.0;
+  // The playout point (now - offset - delay) follows changes of offset and
+  // delay at most this fast (seconds per second, so the rendered timeline
+  // runs at 1 +- clock_slew), unless they differ by more than clock_snap_s.
+  double clock_slew = 0.1;
+  double clock_snap_s = 0.25;
+  // Extrapolate at most this far past the newest sample, then hold.
+  double max_extrapolation_s = 0.2;
+  // A sender time off by more than this from the expected progression
+  // (last sender time + receive time elapsed since) resets the filter.
+  double time_jump_s = 1.0;
+  // Sequence numbers less than this far behind the newest are stale packets;
+  // further behind, the sender restarted its counter.
+  std::uint32_t reorder_window = 1000;
+  // Insert late (out-of-order) packets that are still ahead of the playout
+  // point instead of dropping them. false: drop every out-of-order packet.
+  bool insert_late_packets = true;
+  // Without velocity / body rates in the packets, extrapolate with rates
+  // differenced from the two newest samples (false: hold position/attitude).
+  bool derive_missing_rates = true;
+};
+
+class PoseFilter {
+ public:
+  explicit PoseFilter(const PoseFilterOptions& options = {});
+
+  // Feed one received packet. true when it entered the buffer.
+  bool push(const PoseSample& s);
+  // The pose to render at IG time now_s. nullopt until the first valid
+  // sample. Call once per frame with a non-decreasing clock.
+  std::optional<FilteredPose> sample(double now_s);
+
+  // Forget all samples and clock estimates (counters kept).
+  void reset();
+
+  const PoseFilterCounters& counters() const { return counters_; }
+  const PoseFilterOptions& options() const { return opt_; }
+  double playout_delay_s() const;      // target delay now
+  double clock_offset_s() const { return offset_; }   // receive - sender, min-filtered
+  double jitter_s() const { return jitter_; }
+  double packet_interval_s() const { return interval_; }
+  int buffered() const { return count_; }
+
+  static constexpr int kCapacity = 128;     // samples kept (about 2 s at 60 Hz)
+  static constexpr int kOffsetWindow = 256;  // receive-sender samples kept
+  static constexpr int kSeenRing = 256;      // recent ids for duplicate detection
+
+ private:
+  struct Entry {
+    double t = 0.0;     // stream time (sender, else receive)
+    double recv = 0.0;  // IG receive time
+    std::uint32_t seq = 0;
+    glm::dvec3 pos{0.0};
+    glm::dquat att{1.0, 0.0, 0.0, 0.0};
+    glm::dvec3 vel{0.0};
+    glm::dvec3 omega{0.0};  // body-frame angular velocity, rad/s (x, y, z)
+    bool has_vel = false;
+    bool has_omega = false;
+  };
+
+  Entry& at(int k) { return buf_[(head_ + k) % kCapacity]; }
+  const Entry& at(int k) const { return buf_[(head_ + k) % kCapacity]; }
+  void restart(const Entry& e);
+  void append(const Entry& e);
+  bool insert_sorted(const Entry& e);
+  void note_offset(double t, double recv);
+  void note_seen(std::uint32_t seq, double t);
+  bool seen(std::uint32_t seq, double t) const;
+  glm::dvec3 extrap_velocity() const;
+  glm::dvec3 extrap_omega() const;
+  FilteredPose interpolate(const Entry& a, const Entry& b, double tau) const;
+
+  PoseFilterOptions opt_;
+  PoseFilterCounters counters_;
+
+  std::array<Entry, kCapacity> buf_{};
+  int head_ = 0, count_ = 0;
+  bool stream_has_sender_ = false, stream_has_seq_ = false;
+  std::uint32_t newest_seq_ = 0;  // sequence of the newest in-order sample
+
+  std::array<double, kOffsetWindow> off_t_{}, off_v_{};
+  int off_next_ = 0, off_count_ = 0;
+  double offset_ = 0.0, jitter_ = 0.0;
+
+  std::array<std::uint32_t, kSeenRing> seen_seq_{};
+  std::array<double, kSeenRing> seen_t_{};
+  int seen_next_ = 0, seen_count_ = 0;
+
+  double interval_ = 1.0 / 60.0;
+  bool interval_known_ = false;
+
+  bool clock_init_ = false;
+  double budget_ = 0.0;  // offset + delay in effect (slewed)
+  double last_now_ = 0.0;
+  double last_tau_ = 0.0;  // stream time of the last output
+  bool have_output_ = false;
+  FilteredPose last_out_{};
+};
+
+}  // namespace ig::io
