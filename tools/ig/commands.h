@@ -9,5 +9,7 @@ namespace ig::app {
 
 int run_info_command(const std::vector<std::string>& args);  // ig info FILE [...]
 int run_run_command(const std::vector<std::string>& args);   // ig run SCENARIO [...]
+int run_serve_command(const std::vector<std::string>& args); // ig serve [...]
+int run_send_command(const std::vector<std::string>& args);  // ig send SCENARIO --to ADDR:PORT [...]
 
 }  // namespace ig::app

@@ -10,6 +10,9 @@ constexpr const char* kHelp =
     "ig - terrain image generator\n"
     "usage:\n"
     "  ig run SCENARIO.json [--out DIR] [--frames N] [--size WxH] [--method NAME] [--headless|--window]\n"
+    "  ig serve [--config FILE] [--udp ADDR:PORT] [--cigi ADDR:PORT --cigi-reply HOST:PORT] [--fgfdm ADDR:PORT]\n"
+    "           [--multicast GROUP] [--channel NAME] [--frames N | --seconds S] [--record FILE] [--out DIR]\n"
+    "  ig send SCENARIO.json --to ADDR:PORT [--protocol native|cigi|fgfdm] [--rate HZ] [--loss P] ...\n"
     "  ig info DEMFILE [--encoding auto|terrain-rgb|png16] [--scale S] [--offset O] [--spacing M]\n"
     "  ig help\n";
 }
@@ -23,6 +26,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 2, argv + argc);
   if (cmd == "run") return ig::app::run_run_command(args);
   if (cmd == "info") return ig::app::run_info_command(args);
+  if (cmd == "serve") return ig::app::run_serve_command(args);
+  if (cmd == "send") return ig::app::run_send_command(args);
   if (cmd == "help" || cmd == "--help" || cmd == "-h") {
     std::fputs(kHelp, stdout);
     return 0;

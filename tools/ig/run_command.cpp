@@ -12,73 +12,52 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capture/png_writer.h"
+#include "cli_args.h"
 #include "commands.h"
-#include "frametime_plot.h"
+#include "io/recording.h"
+#include "pose_feed.h"
+#include "run_outputs.h"
 #include "scenario_runner.h"
 
 namespace ig::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
 constexpr const char* kUsage =
     "usage: ig run SCENARIO.json [--out DIR] [--frames N] [--size WxH] [--method NAME]\n"
-    "              [--headless | --window [--fullscreen] [--vsync on|off]] [--shader-dir DIR] [--quiet]\n";
+    "              [--recording FILE] [--headless | --window [--fullscreen] [--vsync on|off]]\n"
+    "              [--shader-dir DIR] [--quiet]\n";
 
 struct Args {
   std::string scenario;
   std::string out_dir;
   RunOptions run;
+  std::optional<std::string> recording;  // replay recorded datagrams instead of the path
   bool quiet = false;
 };
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-int parse_int(const std::string& flag, const std::string& v) {
-  size_t used = 0;
-  int n = 0;
-  try {
-    n = std::stoi(v, &used);
-  } catch (...) {
-    used = 0;
-  }
-  if (used != v.size() || n <= 0) throw UsageError(flag + ": expected a positive integer, got '" + v + "'");
-  return n;
-}
-
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  args.run.headless = true;
+  ArgReader r(a);
   bool window = false, headless = false;
-  for (size_t k = 0; k < a.size(); ++k) {
-    const std::string& f = a[k];
-    auto value = [&]() -> const std::string& {
-      if (k + 1 >= a.size()) throw UsageError(f + ": missing value");
-      return a[++k];
-    };
-    if (f == "--out") args.out_dir = value();
-    else if (f == "--frames") args.run.frames = parse_int(f, value());
+  while (!r.done()) {
+    const std::string f = r.next();
+    if (f == "--out") args.out_dir = r.value(f);
+    else if (f == "--frames") args.run.frames = r.positive_int(f);
     else if (f == "--size") {
-      const std::string v = value();
-      const auto x = v.find('x');
-      if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + v + "'");
-      args.run.width = parse_int(f, v.substr(0, x));
-      args.run.height = parse_int(f, v.substr(x + 1));
-    } else if (f == "--method") args.run.method = value();
+      int w = 0, h = 0;
+      r.size(f, w, h);
+      args.run.width = w;
+      args.run.height = h;
+    } else if (f == "--method") args.run.method = r.value(f);
+    else if (f == "--recording") args.recording = r.value(f);
     else if (f == "--headless") headless = true;
     else if (f == "--window") window = true;
     else if (f == "--fullscreen") args.run.fullscreen = window = true;
     else if (f == "--vsync") {
-      const std::string v = value();
+      const std::string v = r.value(f);
       if (v != "on" && v != "off") throw UsageError("--vsync: expected on or off");
       args.run.vsync = v == "on";
-    } else if (f == "--shader-dir") args.run.shader_dir = value();
+    } else if (f == "--shader-dir") args.run.shader_dir = r.value(f);
     else if (f == "--quiet") args.quiet = true;
     else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
     else if (args.scenario.empty()) args.scenario = f;
@@ -88,12 +67,6 @@ Args parse_args(const std::vector<std::string>& a) {
   if (window && headless) throw UsageError("--window and --headless exclude each other");
   args.run.headless = !window;
   return args;
-}
-
-std::string capture_name(const ChannelView& ch, int frame, double t) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "capture_%s_t%07.3fs_f%06d.png", ch.spec.name.c_str(), t, frame);
-  return buf;
 }
 
 }  // namespace
@@ -114,7 +87,21 @@ int run_run_command(const std::vector<std::string>& argv) {
 
     ScenarioRunner runner(std::move(scenario), args.run);
     const auto& s = runner.scenario();
-    const int frames = runner.frame_count();
+
+    // A recording replaces the scripted path: its datagrams go through the
+    // same decoders and filter as live, on a simulated clock (deterministic).
+    std::vector<io::RecordedDatagram> records;
+    std::optional<PoseFeed> feed;
+    double t0 = 0.0;
+    int frames = runner.frame_count();
+    if (args.recording) {
+      records = io::read_recording(*args.recording);
+      if (records.empty()) throw std::runtime_error(*args.recording + ": recording holds no datagrams");
+      feed.emplace(runner.heightfield());
+      t0 = records.front().receive_time_s;
+      if (!args.run.frames)
+        frames = int((records.back().receive_time_s - t0) / s.time_step_s) + 1;
+    }
 
     // Frames to capture: the nearest frame to each capture time inside the run.
     std::set<int> capture_frames;
@@ -122,84 +109,31 @@ int run_run_command(const std::vector<std::string>& argv) {
       if (const int k = std::min(int(std::lround(t / s.time_step_s)), io::scenario_frame_count(s) - 1); k < frames)
         capture_frames.insert(k);
 
-    stats::FrameLog log((out / "frames.csv").string());
-    std::vector<std::string> captured;
-    const bool progress = !args.quiet && isatty(STDERR_FILENO);
-    const auto run_start = Clock::now();
-    int rendered = 0;
+    RunOutputs outputs(out, "ig run", !args.quiet && isatty(STDERR_FILENO));
+    size_t next_record = 0;
     for (int k = 0; k < frames; ++k) {
-      if (!runner.context().headless() && const_cast<gl::GlContext&>(runner.context()).should_close()) break;
-      const FrameResult f = runner.render_frame(k);
-      const bool last = k == frames - 1;
-      for (size_t c = 0; c < runner.channels().size(); ++c) {
-        auto& ch = runner.channels()[c];
-        double readback_ms = 0.0, present_ms = 0.0;
-        if (capture_frames.count(k) || last) {
-          const auto t0 = Clock::now();
-          const auto rgba = ch.target->read_rgba();
-          readback_ms = ms_since(t0);
-          const int w = ch.target->width(), h = ch.target->height();
-          if (capture_frames.count(k)) {
-            const std::string name = capture_name(ch, k, f.sim_time_s);
-            capture::write_png_rgba((out / name).string(), rgba, w, h);
-            captured.push_back(name);
-          }
-          if (last) {
-            const std::string name = c == 0 ? "final.png" : "final_" + ch.spec.name + ".png";
-            capture::write_png_rgba((out / name).string(), rgba, w, h);
-            captured.push_back(name);
-          }
-        }
-        if (c == 0 && !runner.context().headless()) {
-          const auto t0 = Clock::now();
-          runner.present();
-          present_ms = ms_since(t0);
-        }
-        log.add_row(frame_log_row(f, ch, readback_ms, present_ms));
+      if (!runner.context().headless() && runner.window_closed()) break;
+      FrameResult f;
+      if (feed) {
+        const double now = t0 + k * s.time_step_s;
+        for (; next_record < records.size() && records[next_record].receive_time_s <= now; ++next_record)
+          feed->intake().handle(records[next_record].protocol, records[next_record].bytes,
+                                records[next_record].receive_time_s);
+        f = runner.render_pose(k, k * s.time_step_s, feed->pose_at(now, runner.pose_at(0.0)));
+      } else {
+        f = runner.render_frame(k);
       }
-      ++rendered;
-      if (progress) {
-        const double elapsed = ms_since(run_start) / 1000.0;
-        std::fprintf(stderr, "\rig run: frame %d/%d  %.1f s elapsed, %.0f ms/frame   ", k + 1, frames, elapsed,
-                     elapsed * 1000.0 / (k + 1));
-      }
+      outputs.frame(runner, f, capture_frames.count(k) > 0, k == frames - 1, frames,
+                    feed ? std::function<void(std::vector<stats::Cell>&)>(
+                               [&](std::vector<stats::Cell>& row) { feed->append_columns(row); })
+                         : nullptr);
     }
-    if (progress) std::fprintf(stderr, "\n");
-
-    const auto& r = s.render;
-    nlohmann::json summary = {
-        {"scenario", s.name},
-        {"scenario_file", args.scenario},
-        {"method", r.method},
-        {"width", r.width},
-        {"height", r.height},
-        {"channels", runner.channels().size()},
-        {"frames_rendered", rendered},
-        {"time_step_s", s.time_step_s},
-        {"gl_version", runner.context().gl_version()},
-        {"gl_renderer", runner.context().gl_renderer()},
-        {"headless", runner.context().headless()},
-        {"terrain",
-         {{"source", runner.heightfield().source},
-          {"width", runner.heightfield().width},
-          {"height", runner.heightfield().height},
-          {"spacing_x_m", runner.heightfield().spacing_x_m},
-          {"spacing_y_m", runner.heightfield().spacing_y_m},
-          {"load_ms", runner.load_ms()}}},
-        {"frame_time", stats::frame_time_summary(log.frame_ms(), r.frame_budget_ms)},
-        {"captures", captured},
-    };
-    std::ofstream((out / "summary.json").string()) << summary.dump(2) << "\n";
-    const bool plotted = plot_frame_times((out / "frames.csv").string(), (out / "frametime.png").string(),
-                                          s.name + " / " + r.method + " / " + runner.context().gl_renderer(),
-                                          r.frame_budget_ms);
-    const auto ft = summary["frame_time"];
-    std::printf("ig run: %s, %d frames x %zu channel(s) at %dx%d, method %s on %s: median %.1f ms, p95 %.1f ms\n",
-                s.name.c_str(), rendered, runner.channels().size(), r.width, r.height, r.method.c_str(),
-                runner.context().gl_renderer().c_str(), ft["median_ms"].get<double>(), ft["p95_ms"].get<double>());
-    std::printf("ig run: outputs in %s (frames.csv, summary.json, %zu PNG%s%s)\n", out.string().c_str(),
-                captured.size(), captured.size() == 1 ? "" : "s", plotted ? ", frametime.png" : "");
-    return plotted ? 0 : 1;
+    nlohmann::json extra = nlohmann::json::object();
+    if (feed) {
+      extra["recording"] = *args.recording;
+      extra["pose_intake"] = feed->summary();
+    }
+    return outputs.finish(runner, args.scenario, extra);
   } catch (const std::exception& e) {
     std::cerr << "ig run: " << e.what() << "\n";
     return 1;

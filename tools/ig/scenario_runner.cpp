@@ -83,14 +83,20 @@ render::Camera ScenarioRunner::camera_for(const io::Pose& pose, const ChannelVie
 }
 
 FrameResult ScenarioRunner::render_frame(int k) {
+  const double t = k * scenario_.time_step_s;
+  const auto t0 = Clock::now();
+  const io::Pose pose = pose_at(t);
+  return render_pose(k, t, pose, ms_since(t0));
+}
+
+FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose& pose, double pose_ms) {
   FrameResult f;
   f.frame = k;
-  f.sim_time_s = k * scenario_.time_step_s;
-  auto t0 = Clock::now();
-  f.pose = pose_at(f.sim_time_s);
-  f.pose_ms = ms_since(t0);
+  f.sim_time_s = sim_time_s;
+  f.pose = pose;
+  f.pose_ms = pose_ms;
   for (auto& ch : channels_) {
-    t0 = Clock::now();
+    const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
     ch.last = renderer_->render(ch.camera, *ch.target);
     ch.render_ms = ms_since(t0);

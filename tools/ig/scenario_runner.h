@@ -64,11 +64,17 @@ class ScenarioRunner {
   double load_ms() const { return load_ms_; }
   std::vector<ChannelView>& channels() { return channels_; }
 
-  // Renders frame k (sim time k * step) for every channel into its target.
+  // Renders frame k (sim time k * step, pose from the scenario's path) for
+  // every channel into its target.
   FrameResult render_frame(int k);
+  // Renders frame k at sim_time_s with a pose from elsewhere (live intake,
+  // a recording); pose_ms is what obtaining it cost.
+  FrameResult render_pose(int k, double sim_time_s, const io::Pose& pose, double pose_ms = 0.0);
   // Pose at simulation time t (terrain-local, metres above sea level).
   io::Pose pose_at(double t_s) const;
   void present();
+  // Windowed: the user closed the window (polls events). Headless: false.
+  bool window_closed() { return context_->should_close(); }
 
  private:
   render::Camera camera_for(const io::Pose& pose, const ChannelView& channel) const;

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "io/filter/geodesy.h"
 #include "terrain/dem_loader.h"
 #include "terrain/georef.h"
 #include "terrain/synthetic_terrain.h"
@@ -51,6 +52,33 @@ io::PathSpec place_path(const io::PathSpec& path, const terrain::Heightfield& hf
     if (path.altitude == io::AltitudeMode::AboveGround) p[2] += hf.sample_surface(p[0], p[1]);
   }
   return out;
+}
+
+io::GeodeticToLocal geodetic_placer(const terrain::Heightfield& hf) {
+  if (!hf.georef) return nullptr;
+  if (hf.georef->geographic) {
+    const auto grid = io::geo::GeographicGrid::make(hf.georef->grid_to_crs, hf.spacing_x_m, hf.spacing_y_m);
+    if (!grid) return nullptr;
+    return [grid = *grid](double lat, double lon, double alt) -> std::optional<glm::dvec3> {
+      const glm::dvec2 xy = grid.to_local(lat, lon);
+      return glm::dvec3(xy, alt);
+    };
+  }
+  return [&hf](double lat, double lon, double alt) -> std::optional<glm::dvec3> {
+    const auto xy = terrain::geodetic_to_local(hf, lat, lon);
+    if (!xy) return std::nullopt;
+    return glm::dvec3(*xy, alt);
+  };
+}
+
+std::function<std::optional<glm::dvec3>(const glm::dvec3&)> local_to_geodetic(const terrain::Heightfield& hf) {
+  if (!hf.georef || !hf.georef->geographic) return nullptr;  // projected DEMs: senders use local frames
+  const auto grid = io::geo::GeographicGrid::make(hf.georef->grid_to_crs, hf.spacing_x_m, hf.spacing_y_m);
+  if (!grid) return nullptr;
+  return [grid = *grid](const glm::dvec3& local) -> std::optional<glm::dvec3> {
+    const auto g = grid.from_local(local);
+    return glm::dvec3(g.lat_deg, g.lon_deg, g.height_m);
+  };
 }
 
 }  // namespace ig::app

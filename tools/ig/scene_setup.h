@@ -3,6 +3,12 @@
 // heightfield (file or generator) and the ownship path in terrain-local
 // metres above sea level.
 
+#include <functional>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "io/pose_intake.h"
 #include "io/scenario.h"
 #include "terrain/heightfield.h"
 
@@ -15,5 +21,12 @@ terrain::Heightfield load_terrain(const io::TerrainSpec& spec);
 // the DEM's georeference (error when it has none), AGL altitudes on top of
 // the surface under each key. Throws io::ScenarioError naming the key.
 io::PathSpec place_path(const io::PathSpec& path, const terrain::Heightfield& hf);
+
+// Geodetic -> terrain-local placement for pose packets: the allocation-free
+// WGS84 grid path for geographic DEMs, GDAL/OGR for projected ones, and
+// nullopt for every packet when the terrain has no georeference.
+io::GeodeticToLocal geodetic_placer(const terrain::Heightfield& hf);
+// The inverse, for senders (local ENU -> lat deg, lon deg, alt m).
+std::function<std::optional<glm::dvec3>(const glm::dvec3&)> local_to_geodetic(const terrain::Heightfield& hf);
 
 }  // namespace ig::app

@@ -1,0 +1,79 @@
+#pragma once
+// UDP transport for pose intake and replies: non-blocking receive (the frame
+// loop polls; it never waits on the network), optional multicast group
+// membership, unicast or multicast send. Bytes only: decoding lives in
+// io/wire, so a transport never knows a protocol and never touches GL.
+
+#include <netinet/in.h>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace ig::io::net {
+
+struct NetError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// "ADDR:PORT" (IPv4 dotted quad or a name resolvable without a network, e.g.
+// localhost). Throws NetError naming the text and the problem.
+sockaddr_in parse_endpoint(const std::string& text);
+std::string to_string(const sockaddr_in& address);
+bool is_multicast(const sockaddr_in& address);
+
+struct ReceiveStats {
+  std::uint64_t datagrams = 0;
+  std::uint64_t bytes = 0;
+  std::uint64_t truncated = 0;  // larger than the receive buffer (dropped)
+  std::uint64_t errors = 0;
+};
+
+class UdpReceiver {
+ public:
+  // Binds ADDR:PORT (SO_REUSEADDR + SO_REUSEPORT so several IG channel
+  // processes can share a multicast port). A multicast bind address joins the
+  // group on `interface_address` (default loopback). Throws NetError.
+  explicit UdpReceiver(const std::string& bind_endpoint, const std::string& interface_address = "127.0.0.1");
+  ~UdpReceiver();
+  UdpReceiver(const UdpReceiver&) = delete;
+  UdpReceiver& operator=(const UdpReceiver&) = delete;
+
+  using Handler = std::function<void(std::span<const std::uint8_t> datagram, double receive_time_s,
+                                     const sockaddr_in& from)>;
+  // Hands every datagram that has already arrived to `handler` (at most
+  // max_datagrams), receive time on the steady clock in seconds. Never blocks.
+  std::size_t poll(const Handler& handler, std::size_t max_datagrams = 4096);
+  const ReceiveStats& stats() const { return stats_; }
+  std::uint16_t port() const;  // the bound port (useful with port 0)
+  int fd() const { return fd_; }
+
+ private:
+  int fd_ = -1;
+  ReceiveStats stats_;
+};
+
+class UdpSender {
+ public:
+  // Unicast or multicast destination; multicast goes out on
+  // `interface_address` with TTL 1 and loopback enabled.
+  explicit UdpSender(const std::string& destination, const std::string& interface_address = "127.0.0.1");
+  ~UdpSender();
+  UdpSender(const UdpSender&) = delete;
+  UdpSender& operator=(const UdpSender&) = delete;
+  // false when the kernel refused (counted by the caller); never throws.
+  bool send(std::span<const std::uint8_t> datagram);
+  bool send_to(std::span<const std::uint8_t> datagram, const sockaddr_in& to);
+
+ private:
+  int fd_ = -1;
+  sockaddr_in destination_{};
+};
+
+// Seconds on the steady clock (the IG's clock for receive times and frames).
+double steady_now_s();
+
+}  // namespace ig::io::net

@@ -1,0 +1,62 @@
+#pragma once
+// From datagrams to the pose filter: decode by protocol, place geodetic
+// positions on the terrain, count what was accepted and why anything was
+// rejected, feed the filter. The same path serves live sockets and
+// recordings, so a replay goes through exactly the decoders and filter the
+// live run used.
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "io/filter/pose_filter.h"
+#include "io/wire/pose_message.h"
+
+namespace ig::io {
+
+enum class Protocol : std::uint8_t { Native = 0, Cigi = 1, FgNetFdm = 2 };
+inline constexpr int kProtocolCount = 3;
+const char* protocol_name(Protocol p);  // "native", "cigi", "fgfdm"
+
+struct SourceCounters {
+  std::uint64_t ok = 0;   // decoded into a pose and handed to the filter
+  std::uint64_t bad = 0;  // rejected (malformed, out of range, unplaceable)
+  std::uint64_t no_pose = 0;  // valid but without an ownship pose (CIGI without entity 0)
+  std::map<std::string, std::uint64_t> reasons;  // reject name -> count
+};
+
+// Geodetic (lat deg, lon deg, alt m) -> terrain-local ENU metres; nullopt when
+// the scene cannot place it (no georeference).
+using GeodeticToLocal = std::function<std::optional<glm::dvec3>(double lat_deg, double lon_deg, double alt_m)>;
+
+class PoseIntake {
+ public:
+  PoseIntake(PoseFilter& filter, GeodeticToLocal to_local);
+  // Decodes one datagram received at receive_time_s (IG clock) and, when it
+  // carries a valid pose, feeds the filter. Never throws.
+  void handle(Protocol protocol, std::span<const std::uint8_t> datagram, double receive_time_s);
+
+  const SourceCounters& counters(Protocol p) const { return counters_[int(p)]; }
+  std::uint64_t total_ok() const;
+  std::uint64_t total_bad() const;
+  // Protocol of the newest pose handed to the filter ("" before any).
+  std::string last_source() const { return last_source_; }
+  // CIGI: the newest host frame counter seen in an IG Control packet.
+  std::optional<std::uint32_t> last_host_frame() const { return last_host_frame_; }
+
+ private:
+  void reject(Protocol p, const std::string& reason);
+  PoseFilter& filter_;
+  GeodeticToLocal to_local_;
+  std::array<SourceCounters, kProtocolCount> counters_;
+  std::string last_source_;
+  std::optional<std::uint32_t> last_host_frame_;
+};
+
+}  // namespace ig::io

@@ -1,0 +1,62 @@
+# ig serve fed by ig send on loopback: every protocol end to end, impaired
+# streams, a flood, recording and replay, multicast channels. Ports 471xx.
+set(IG_SERVE_OUT ${CMAKE_BINARY_DIR}/test-out/serve)
+set(IG_E2E bash ${CMAKE_SOURCE_DIR}/tests/tools/serve_and_send.sh ${CMAKE_BINARY_DIR}/bin ${CMAKE_SOURCE_DIR})
+string(REPLACE ";" " " IG_E2E_SHELL "${IG_E2E}")  # the same, inside a bash -c string
+
+foreach(proto_port native:47120 cigi:47130 fgfdm:47140)
+  string(REPLACE ":" ";" pp ${proto_port})
+  list(GET pp 0 proto)
+  list(GET pp 1 port)
+  add_test(NAME cli.serve.${proto}_follows_path COMMAND ${IG_E2E} ${IG_SERVE_OUT}/${proto} ${proto} ${port})
+  set_tests_properties(cli.serve.${proto}_follows_path PROPERTIES LABELS "cli;net"
+    PASS_REGULAR_EXPRESSION "follows the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+endforeach()
+# The CIGI host gets a Start Of Frame per IG frame, counters increasing.
+set_tests_properties(cli.serve.cigi_follows_path PROPERTIES
+  PASS_REGULAR_EXPRESSION "Start Of Frame received, last IG frame [1-9][0-9]+, last host frame echoed [1-9][0-9]*, 0 not increasing.*follows the sent path")
+
+# Loss, jitter, reordering, duplicates and corrupted bytes: still on the path,
+# the corrupted datagrams counted as bad.
+add_test(NAME cli.serve.impaired_stream COMMAND ${IG_E2E} ${IG_SERVE_OUT}/impaired native 47150
+  --send --loss 0.1 --jitter-ms 30 --reorder 0.05 --duplicate 0.05 --corrupt 0.05 --seed 7
+  --check --pos-tol 2.0 --angle-tol 1.0 --expect-bad 1)
+set_tests_properties(cli.serve.impaired_stream PROPERTIES LABELS "cli;net"
+  PASS_REGULAR_EXPRESSION "follows the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+
+# 100 000 datagrams (half of them corrupted) as fast as loopback takes them:
+# the IG keeps rendering (7 s of frames), the bad ones are counted, the pose
+# stays finite and near the path (within the 0.2 s extrapolation bound).
+add_test(NAME cli.serve.flood COMMAND ${IG_E2E} ${IG_SERVE_OUT}/flood native 47160
+  --send --flood 100000 --corrupt 0.5 --seed 3
+  --check --min-frames 0 --min-total-frames 200 --expect-bad 1000)
+set_tests_properties(cli.serve.flood PROPERTIES LABELS "cli;net"
+  PASS_REGULAR_EXPRESSION "follows the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+
+# Record the live stream, replay it twice through ig run --recording: the
+# replays are identical and follow what was sent.
+add_test(NAME cli.serve.record_and_replay COMMAND bash -c "set -e
+    ${IG_E2E_SHELL} ${IG_SERVE_OUT}/record native 47170 --serve --record ${IG_SERVE_OUT}/record.igrec
+    for k in 1 2; do
+      '$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --recording ${IG_SERVE_OUT}/record.igrec \
+        --size 160x120 --out ${IG_SERVE_OUT}/replay\$k --quiet
+    done
+    cut -d, -f1,13-18 ${IG_SERVE_OUT}/replay1/frames.csv > ${IG_SERVE_OUT}/replay1.poses
+    cut -d, -f1,13-18 ${IG_SERVE_OUT}/replay2/frames.csv > ${IG_SERVE_OUT}/replay2.poses
+    cmp ${IG_SERVE_OUT}/replay1.poses ${IG_SERVE_OUT}/replay2.poses && echo 'replays identical'
+    python3 '${CMAKE_SOURCE_DIR}/tests/tools/check_pose_follow.py' ${IG_SERVE_OUT}/replay1/frames.csv ${IG_SERVE_OUT}/record/send.csv")
+set_tests_properties(cli.serve.record_and_replay PROPERTIES LABELS "cli;net"
+  PASS_REGULAR_EXPRESSION "replays identical.*follows the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+
+# Three channel processes on one loopback multicast group, fed one stream.
+add_test(NAME cli.serve.multicast_three_channels COMMAND bash
+  ${CMAKE_SOURCE_DIR}/tests/tools/multicast_channels.sh ${CMAKE_BINARY_DIR}/bin ${CMAKE_SOURCE_DIR} ${IG_SERVE_OUT}/multicast)
+set_tests_properties(cli.serve.multicast_three_channels PROPERTIES LABELS "cli;net"
+  PASS_REGULAR_EXPRESSION "all 3 channels follow the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+
+add_test(NAME cli.serve.no_source
+  COMMAND bash -c "'$<TARGET_FILE:ig>' serve --frames 1 2>&1; test $? -eq 2 && echo exit-2")
+set_tests_properties(cli.serve.no_source PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "no pose source.*exit-2")
+add_test(NAME cli.serve.bad_endpoint
+  COMMAND bash -c "'$<TARGET_FILE:ig>' serve --udp 127.0.0.1:99999 --frames 1 2>&1; test $? -ne 0 && echo exit-nonzero")
+set_tests_properties(cli.serve.bad_endpoint PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "port must be 0..65535.*exit-nonzero")

@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""Checks that the poses an IG logged (frames.csv of ig serve / ig run
+--recording) follow the path a sender sent (ig send --log): every logged
+pose taken from received packets lies within a tolerance of the sent
+polyline, its heading/pitch/roll match the nearest sent sample, and enough
+frames used received poses. Prints the measured maxima; exit 1 on failure."""
+import argparse
+import csv
+import math
+import sys
+
+
+def angle_diff(a, b):
+    d = (a - b) % 360.0
+    return min(d, 360.0 - d)
+
+
+def seg_distance(p, a, b):
+    ab = [b[i] - a[i] for i in range(3)]
+    ap = [p[i] - a[i] for i in range(3)]
+    den = sum(c * c for c in ab)
+    t = 0.0 if den == 0 else max(0.0, min(1.0, sum(ap[i] * ab[i] for i in range(3)) / den))
+    q = [a[i] + t * ab[i] for i in range(3)]
+    return math.dist(p, q), t
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("frames_csv")
+    ap.add_argument("send_log")
+    ap.add_argument("--pos-tol", type=float, default=1.0)
+    ap.add_argument("--angle-tol", type=float, default=0.5)
+    ap.add_argument("--min-frames", type=int, default=20)
+    ap.add_argument("--extrapolation-tol", type=float, default=70.0,
+                    help="frames the filter extrapolated or held (after the stream ends, in gaps): "
+                         "max distance from the path, about 0.2 s x speed")
+    ap.add_argument("--expect-bad", type=int, default=None, help="packets_bad must be at least this")
+    ap.add_argument("--min-total-frames", type=int, default=0, help="frames rendered in all (the IG kept going)")
+    a = ap.parse_args()
+
+    sent = []
+    with open(a.send_log) as f:
+        for r in csv.DictReader(f):
+            sent.append(([float(r["x_m"]), float(r["y_m"]), float(r["z_m"])],
+                         [float(r["heading_deg"]), float(r["pitch_deg"]), float(r["roll_deg"])]))
+    with open(a.frames_csv) as f:
+        all_rows = list(csv.DictReader(f))
+    rows = [r for r in all_rows if r["pose_source"] != "none"]
+    if len(all_rows) < a.min_total_frames:
+        print(f"FAIL: only {len(all_rows)} frames rendered (need {a.min_total_frames})")
+        return 1
+    if len(rows) < max(a.min_frames, 1):
+        print(f"FAIL: only {len(rows)} frames used received poses (need {a.min_frames})")
+        return 1
+    worst_pos = worst_ang = worst_extra = 0.0
+    interpolated = 0
+    for r in rows:
+        p = [float(r["x_m"]), float(r["y_m"]), float(r["z_m"])]
+        best = (1e30, 0, 0.0)
+        for k in range(len(sent) - 1):
+            d, t = seg_distance(p, sent[k][0], sent[k + 1][0])
+            if d < best[0]:
+                best = (d, k, t)
+        d, k, t = best
+        ref = sent[k + 1][1] if t > 0.5 else sent[k][1]
+        got = [float(r["heading_deg"]), float(r["pitch_deg"]), float(r["roll_deg"])]
+        ang = max(angle_diff(got[i], ref[i]) for i in range(3))
+        # Between two samples the attitude may sit anywhere between them.
+        ang = min(ang, max(angle_diff(got[i], sent[k][1][i]) for i in range(3)))
+        if r["pose_mode"] == "interpolating":
+            interpolated += 1
+            worst_pos, worst_ang = max(worst_pos, d), max(worst_ang, ang)
+        else:
+            worst_extra = max(worst_extra, d)
+        if not all(math.isfinite(v) for v in p + got):
+            print(f"FAIL: non-finite pose at frame {r['frame']}")
+            return 1
+    bad = int(rows[-1]["packets_bad"])
+    print(f"frames with received poses: {len(rows)} ({interpolated} interpolated); interpolated: max distance to "
+          f"sent path {worst_pos:.3f} m, max attitude difference {worst_ang:.3f} deg; extrapolated/held: max "
+          f"distance {worst_extra:.1f} m; packets ok {rows[-1]['packets_ok']}, bad {bad}")
+    ok = worst_pos <= a.pos_tol and worst_ang <= a.angle_tol and worst_extra <= a.extrapolation_tol
+    ok = ok and interpolated >= a.min_frames
+    if a.expect_bad is not None and bad < a.expect_bad:
+        print(f"FAIL: expected at least {a.expect_bad} bad packets, saw {bad}")
+        ok = False
+    print("follows the sent path" if ok else "FAIL: pose does not follow the sent path")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

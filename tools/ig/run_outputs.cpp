@@ -1,0 +1,112 @@
+#include "run_outputs.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "capture/png_writer.h"
+#include "frametime_plot.h"
+
+namespace ig::app {
+namespace {
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+std::string capture_name(const ChannelView& ch, int frame, double t) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "capture_%s_t%07.3fs_f%06d.png", ch.spec.name.c_str(), t, frame);
+  return buf;
+}
+}  // namespace
+
+RunOutputs::RunOutputs(const std::filesystem::path& dir, std::string command, bool progress)
+    : dir_((std::filesystem::create_directories(dir), dir)),
+      command_(std::move(command)),
+      progress_(progress),
+      log_((dir / "frames.csv").string()),
+      start_(Clock::now()) {}
+
+void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool capture, bool last, int total_frames,
+                       const std::function<void(std::vector<stats::Cell>&)>& extra) {
+  for (size_t c = 0; c < runner.channels().size(); ++c) {
+    auto& ch = runner.channels()[c];
+    double readback_ms = 0.0, present_ms = 0.0;
+    if (capture || last) {
+      const auto t0 = Clock::now();
+      const auto rgba = ch.target->read_rgba();
+      readback_ms = ms_since(t0);
+      const int w = ch.target->width(), h = ch.target->height();
+      std::vector<std::string> names;
+      if (capture) names.push_back(capture_name(ch, f.frame, f.sim_time_s));
+      if (last) names.push_back(c == 0 ? "final.png" : "final_" + ch.spec.name + ".png");
+      for (const auto& name : names) {
+        capture::write_png_rgba((dir_ / name).string(), rgba, w, h);
+        captured_.push_back(name);
+      }
+    }
+    if (c == 0 && !runner.context().headless()) {
+      const auto t0 = Clock::now();
+      runner.present();
+      present_ms = ms_since(t0);
+    }
+    auto row = frame_log_row(f, ch, readback_ms, present_ms);
+    if (extra) extra(row);
+    log_.add_row(row);
+  }
+  ++rendered_;
+  if (progress_) {
+    const double elapsed = ms_since(start_) / 1000.0;
+    if (total_frames > 0)
+      std::fprintf(stderr, "\r%s: frame %d/%d  %.1f s elapsed, %.0f ms/frame   ", command_.c_str(), rendered_,
+                   total_frames, elapsed, elapsed * 1000.0 / rendered_);
+    else
+      std::fprintf(stderr, "\r%s: frame %d  %.1f s elapsed, %.0f ms/frame   ", command_.c_str(), rendered_, elapsed,
+                   elapsed * 1000.0 / rendered_);
+  }
+}
+
+int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file, nlohmann::json extra) {
+  if (progress_) std::fprintf(stderr, "\n");
+  const auto& s = runner.scenario();
+  const auto& r = s.render;
+  const auto& hf = runner.heightfield();
+  nlohmann::json summary = {
+      {"command", command_},
+      {"scenario", s.name},
+      {"scenario_file", scenario_file},
+      {"method", r.method},
+      {"width", r.width},
+      {"height", r.height},
+      {"channels", runner.channels().size()},
+      {"frames_rendered", rendered_},
+      {"time_step_s", s.time_step_s},
+      {"gl_version", runner.context().gl_version()},
+      {"gl_renderer", runner.context().gl_renderer()},
+      {"headless", runner.context().headless()},
+      {"terrain",
+       {{"source", hf.source},
+        {"width", hf.width},
+        {"height", hf.height},
+        {"spacing_x_m", hf.spacing_x_m},
+        {"spacing_y_m", hf.spacing_y_m},
+        {"georeferenced", hf.georef.has_value()},
+        {"load_ms", runner.load_ms()}}},
+      {"frame_time", stats::frame_time_summary(log_.frame_ms(), r.frame_budget_ms)},
+      {"captures", captured_},
+  };
+  for (auto it = extra.begin(); extra.is_object() && it != extra.end(); ++it) summary[it.key()] = it.value();
+  std::ofstream((dir_ / "summary.json").string()) << summary.dump(2) << "\n";
+  const bool plotted = plot_frame_times(log_.path(), (dir_ / "frametime.png").string(),
+                                        s.name + " / " + r.method + " / " + runner.context().gl_renderer(),
+                                        r.frame_budget_ms);
+  const auto& ft = summary["frame_time"];
+  std::printf("%s: %s, %d frames x %zu channel(s) at %dx%d, method %s on %s: median %.1f ms, p95 %.1f ms\n",
+              command_.c_str(), s.name.c_str(), rendered_, runner.channels().size(), r.width, r.height,
+              r.method.c_str(), runner.context().gl_renderer().c_str(), ft["median_ms"].get<double>(),
+              ft["p95_ms"].get<double>());
+  std::printf("%s: outputs in %s (frames.csv, summary.json, %zu PNG%s%s)\n", command_.c_str(), dir_.string().c_str(),
+              captured_.size(), captured_.size() == 1 ? "" : "s", plotted ? ", frametime.png" : "");
+  return plotted ? 0 : 1;
+}
+
+}  // namespace ig::app

@@ -1,0 +1,43 @@
+#pragma once
+// What a run leaves behind, shared by ig run and ig serve: frames.csv (one
+// row per frame and channel), captured PNGs, final.png, summary.json and the
+// frametime.png plot, plus the progress line on a terminal.
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scenario_runner.h"
+#include "stats/frame_log.h"
+
+namespace ig::app {
+
+class RunOutputs {
+ public:
+  RunOutputs(const std::filesystem::path& dir, std::string command, bool progress);
+
+  // After runner.render_frame / render_pose: reads back and writes PNGs when
+  // asked, presents the first channel in a window, logs one row per channel
+  // (`extra` appends columns, e.g. pose intake state).
+  void frame(ScenarioRunner& runner, const FrameResult& f, bool capture, bool last, int total_frames,
+             const std::function<void(std::vector<stats::Cell>&)>& extra = nullptr);
+
+  // Writes summary.json (the common fields plus `extra`) and frametime.png,
+  // prints the closing lines. Returns the process exit code.
+  int finish(ScenarioRunner& runner, const std::string& scenario_file, nlohmann::json extra = {});
+
+ private:
+  std::filesystem::path dir_;
+  std::string command_;
+  bool progress_;
+  stats::FrameLog log_;
+  std::vector<std::string> captured_;
+  int rendered_ = 0;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace ig::app

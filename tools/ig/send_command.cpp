@@ -1,0 +1,278 @@
+// ig send (also build/bin/ig-send): plays a scenario's path as pose packets
+// (native, CIGI 3.3 or FlightGear FGNetFDM) to a unicast or multicast
+// address at a given rate, with optional loss, jitter, reordering, duplicates
+// and corrupted bytes: the host side of the loopback tests and a stand-in for
+// a simulation host.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <queue>
+#include <random>
+#include <thread>
+
+#include "cli_args.h"
+#include "commands.h"
+#include "io/net/udp_socket.h"
+#include "io/path_interpolator.h"
+#include "io/pose_intake.h"
+#include "io/wire/cigi.h"
+#include "io/wire/fgnetfdm.h"
+#include "io/wire/native.h"
+#include "scene_setup.h"
+
+namespace ig::app {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: ig send SCENARIO.json --to ADDR:PORT [--protocol native|cigi|fgfdm] [--rate HZ]\n"
+    "               [--duration S] [--geodetic] [--loss P] [--burst-loss P --burst-length N]\n"
+    "               [--jitter-ms J] [--reorder P] [--duplicate P] [--corrupt P] [--seed N]\n"
+    "               [--flood N] [--cigi-listen ADDR:PORT] [--log FILE] [--quiet]\n"
+    "  --flood N sends N packets as fast as the socket takes them (no pacing).\n";
+
+struct Args {
+  std::string scenario, to;
+  io::Protocol protocol = io::Protocol::Native;
+  double rate_hz = 60.0;
+  std::optional<double> duration_s;
+  bool geodetic = false;
+  double loss = 0, burst_loss = 0, jitter_ms = 0, reorder = 0, duplicate = 0, corrupt = 0;
+  int burst_length = 10;
+  unsigned seed = 1;
+  std::optional<int> flood;
+  std::optional<std::string> cigi_listen, log;
+  bool quiet = false;
+};
+
+Args parse_args(const std::vector<std::string>& a) {
+  Args args;
+  ArgReader r(a);
+  while (!r.done()) {
+    const std::string f = r.next();
+    if (f == "--to") args.to = r.value(f);
+    else if (f == "--protocol") {
+      const std::string p = r.value(f);
+      if (p == "native") args.protocol = io::Protocol::Native;
+      else if (p == "cigi") args.protocol = io::Protocol::Cigi;
+      else if (p == "fgfdm") args.protocol = io::Protocol::FgNetFdm;
+      else throw UsageError("--protocol: expected native, cigi or fgfdm, got '" + p + "'");
+    } else if (f == "--rate") args.rate_hz = r.positive_double(f);
+    else if (f == "--duration") args.duration_s = r.positive_double(f);
+    else if (f == "--geodetic") args.geodetic = true;
+    else if (f == "--loss") args.loss = r.probability(f);
+    else if (f == "--burst-loss") args.burst_loss = r.probability(f);
+    else if (f == "--burst-length") args.burst_length = r.positive_int(f);
+    else if (f == "--jitter-ms") args.jitter_ms = r.positive_double(f);
+    else if (f == "--reorder") args.reorder = r.probability(f);
+    else if (f == "--duplicate") args.duplicate = r.probability(f);
+    else if (f == "--corrupt") args.corrupt = r.probability(f);
+    else if (f == "--seed") args.seed = unsigned(r.positive_int(f));
+    else if (f == "--flood") args.flood = r.positive_int(f);
+    else if (f == "--cigi-listen") args.cigi_listen = r.value(f);
+    else if (f == "--log") args.log = r.value(f);
+    else if (f == "--quiet") args.quiet = true;
+    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
+    else if (args.scenario.empty()) args.scenario = f;
+    else throw UsageError("unexpected argument " + f);
+  }
+  if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
+  if (args.to.empty()) throw UsageError("missing --to ADDR:PORT");
+  return args;
+}
+
+// Uniform in [0, 1) from raw 32-bit draws (std:: distributions differ between
+// standard libraries; this keeps a seed's impairments the same everywhere).
+struct Rng {
+  std::mt19937 gen;
+  explicit Rng(unsigned seed) : gen(seed) {}
+  double uniform() { return gen() / 4294967296.0; }
+  bool chance(double p) { return p > 0 && uniform() < p; }
+};
+
+struct Packet {
+  double send_at_s;
+  std::uint32_t order;  // tie-break keeps equal times in sequence
+  std::vector<std::uint8_t> bytes;
+  bool operator<(const Packet& o) const { return send_at_s != o.send_at_s ? send_at_s > o.send_at_s : order > o.order; }
+};
+
+}  // namespace
+
+int run_send_command(const std::vector<std::string>& argv) {
+  Args args;
+  try {
+    args = parse_args(argv);
+  } catch (const UsageError& e) {
+    std::cerr << "ig send: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+  try {
+    const io::Scenario scenario = io::load_scenario(args.scenario);
+    const terrain::Heightfield hf = load_terrain(scenario.terrain);
+    const io::PathInterpolator path(place_path(scenario.path, hf));
+    const auto to_geodetic = local_to_geodetic(hf);
+    const bool geodetic = args.geodetic || args.protocol != io::Protocol::Native;
+    if (geodetic && !to_geodetic)
+      throw std::runtime_error(args.scenario + ": " + io::protocol_name(args.protocol) +
+                               " needs geodetic positions but the terrain has no geographic georeference "
+                               "(give terrain.generator.origin or use --protocol native)");
+    io::net::UdpSender sender(args.to);
+    std::unique_ptr<io::net::UdpReceiver> sof_socket;
+    if (args.cigi_listen) sof_socket = std::make_unique<io::net::UdpReceiver>(*args.cigi_listen);
+    std::ofstream log;
+    if (args.log) {
+      log.open(*args.log);
+      if (!log) throw std::runtime_error(*args.log + ": cannot create send log");
+      log << "sequence,t_s,sender_time_s,sent,x_m,y_m,z_m,heading_deg,pitch_deg,roll_deg\n";
+    }
+
+    const double duration = args.duration_s.value_or(scenario.duration_s);
+    const int count = args.flood ? *args.flood : int(std::floor(duration * args.rate_hz + 1e-9)) + 1;
+    const double period = 1.0 / args.rate_hz;
+    const double start = io::net::steady_now_s() + 0.05;  // a moment to open the receiver's socket
+
+    // One datagram for sequence i: the path at time t, stamped with the
+    // sender's clock (the steady clock) at sender_time.
+    auto make_datagram = [&](int i, double t, double sender_time, io::Hpr& hpr, io::Pose& pose) {
+      pose = path.sample(t);
+      const double h = 0.5 * period;
+      const glm::dvec3 velocity = (path.sample(t + h).position - path.sample(std::max(0.0, t - h)).position) /
+                                  (t >= h ? 2 * h : h);
+      hpr = io::hpr_from_attitude(pose.attitude);
+      io::wire::PoseMessage m;
+      m.heading_deg = hpr.heading_deg;
+      m.pitch_deg = hpr.pitch_deg;
+      m.roll_deg = hpr.roll_deg;
+      m.sequence = std::uint32_t(i);
+      m.has_sequence = true;
+      m.sender_time_s = sender_time;
+      m.has_sender_time = true;
+      m.velocity_mps = velocity;
+      m.has_velocity = true;
+      m.position = pose.position;
+      if (geodetic) {
+        m.frame = io::wire::PoseMessage::Frame::Geodetic;
+        m.position = *to_geodetic(pose.position);
+      }
+      switch (args.protocol) {
+        case io::Protocol::Native: {
+          const auto a = io::wire::encode_native(m);
+          return std::vector<std::uint8_t>(a.begin(), a.end());
+        }
+        case io::Protocol::Cigi:
+          return io::wire::encode_cigi_host_datagram(std::uint32_t(i), io::wire::kCigiModeOperate, m, false);
+        case io::Protocol::FgNetFdm: {
+          const auto a = io::wire::encode_fgnetfdm(m);
+          return std::vector<std::uint8_t>(a.begin(), a.end());
+        }
+      }
+      return std::vector<std::uint8_t>{};
+    };
+
+    Rng rng(args.seed);
+    std::uint64_t lost = 0, duplicated = 0, corrupted = 0, reordered = 0;
+    auto corrupt = [&](std::vector<std::uint8_t>& bytes) {
+      if (!rng.chance(args.corrupt)) return;
+      const int flips = 1 + int(rng.uniform() * 3);
+      for (int k = 0; k < flips; ++k) bytes[size_t(rng.uniform() * bytes.size())] ^= std::uint8_t(1 + rng.gen() % 255);
+      ++corrupted;
+    };
+    auto log_pose = [&](int i, double t, double sender_time, bool sent, const io::Pose& pose, const io::Hpr& hpr) {
+      if (log.is_open())
+        log << i << "," << t << "," << sender_time - start << "," << sent << "," << pose.position.x << ","
+            << pose.position.y << "," << pose.position.z << "," << hpr.heading_deg << "," << hpr.pitch_deg << ","
+            << hpr.roll_deg << "\n";
+    };
+
+    // Paced: the whole schedule first (impairments decide send times), then
+    // send in time order. Flood: as fast as the socket takes them, each
+    // packet the path at the moment it is sent.
+    std::priority_queue<Packet> queue;
+    if (!args.flood) {
+      int burst_left = 0;
+      std::uint32_t order = 0;
+      for (int i = 0; i < count; ++i) {
+        io::Hpr hpr;
+        io::Pose pose;
+        const double t = i * period;
+        auto bytes = make_datagram(i, t, start + t, hpr, pose);
+        bool sent = true;
+        if (burst_left > 0) --burst_left, sent = false;
+        else if (rng.chance(args.burst_loss)) burst_left = args.burst_length - 1, sent = false;
+        else if (rng.chance(args.loss)) sent = false;
+        log_pose(i, t, start + t, sent, pose, hpr);
+        if (!sent) {
+          ++lost;
+          continue;
+        }
+        corrupt(bytes);
+        double at = t + rng.uniform() * args.jitter_ms * 1e-3;
+        if (rng.chance(args.reorder)) at += 1.5 * period, ++reordered;  // overtaken by the next packet
+        queue.push({at, order++, bytes});
+        if (rng.chance(args.duplicate)) queue.push({at + 0.25 * period, order++, bytes}), ++duplicated;
+      }
+    }
+
+    std::uint64_t sent_ok = 0, send_failed = 0, sof_count = 0, sof_not_increasing = 0;
+    std::optional<io::wire::CigiStartOfFrame> last_sof;
+    auto poll_sof = [&] {
+      if (!sof_socket) return;
+      sof_socket->poll([&](std::span<const std::uint8_t> d, double, const sockaddr_in&) {
+        const auto r = io::wire::decode_cigi_start_of_frame(d);
+        if (!r.sof) return;
+        if (last_sof && r.sof->ig_frame <= last_sof->ig_frame) ++sof_not_increasing;
+        ++sof_count;
+        last_sof = r.sof;
+      });
+    };
+    if (args.flood) {
+      double next_log = 0.0;
+      for (int i = 0; i < count; ++i) {
+        const double now = io::net::steady_now_s();
+        const double t = std::clamp(now - start, 0.0, duration);
+        io::Hpr hpr;
+        io::Pose pose;
+        auto bytes = make_datagram(i, t, now, hpr, pose);
+        if (t >= next_log) log_pose(i, t, now, true, pose, hpr), next_log = t + 0.5 * period;
+        corrupt(bytes);
+        (sender.send(bytes) ? sent_ok : send_failed)++;
+        if (i % 256 == 0) poll_sof();
+      }
+    }
+    while (!queue.empty()) {
+      const Packet p = queue.top();
+      queue.pop();
+      const double wait = start + p.send_at_s - io::net::steady_now_s();
+      if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
+      (sender.send(p.bytes) ? sent_ok : send_failed)++;
+      poll_sof();
+    }
+    if (sof_socket) {  // the IG answers each frame: collect the last replies
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      poll_sof();
+    }
+    if (!args.quiet) {
+      std::printf("ig send: %d poses as %s to %s: %llu datagrams sent (%llu refused), %llu lost, %llu duplicated, "
+                  "%llu reordered, %llu corrupted\n",
+                  count, io::protocol_name(args.protocol), args.to.c_str(), (unsigned long long)sent_ok,
+                  (unsigned long long)send_failed, (unsigned long long)lost, (unsigned long long)duplicated,
+                  (unsigned long long)reordered, (unsigned long long)corrupted);
+      if (sof_socket)
+        std::printf("ig send: %llu CIGI Start Of Frame received, last IG frame %u, last host frame echoed %u, "
+                    "%llu not increasing\n",
+                    (unsigned long long)sof_count, last_sof ? last_sof->ig_frame : 0u,
+                    last_sof ? last_sof->last_host_frame : 0u, (unsigned long long)sof_not_increasing);
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "ig send: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace ig::app
