@@ -56,13 +56,13 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   shading.sky_horizon = to_vec3(r.sky_horizon_rgb);
   shading.fog_visibility_m = r.fog_visibility_m;
   scene_ = std::make_unique<render::TerrainScene>(heightfield_, shading, r.imagery);
-  method_ = render::make_method(r.method, *scene_, options_.shader_dir, twolevel_options(r.twolevel));
-  renderer_ = std::make_unique<render::FrameRenderer>(*scene_, *method_, options_.shader_dir);
 
   for (const auto& spec : scenario_.channels) {
     ChannelView v;
     v.spec = spec;
     v.target = std::make_unique<gl::RenderTarget>(r.width, r.height);
+    v.method = render::make_method(r.method, *scene_, options_.shader_dir, twolevel_options(r.twolevel));
+    v.renderer = std::make_unique<render::FrameRenderer>(*scene_, *v.method, options_.shader_dir);
     channels_.push_back(std::move(v));
   }
 }
@@ -98,7 +98,7 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
-    ch.last = renderer_->render(ch.camera, *ch.target);
+    ch.last = ch.renderer->render(ch.camera, *ch.target);
     ch.render_ms = ms_since(t0);
   }
   return f;

@@ -31,10 +31,14 @@ struct RunOptions {
   std::string shader_dir;             // "" = gl::default_shader_dir()
 };
 
+// One view of the scene. LOD state (the two-level size controller, the
+// look-at point) depends on the view, so each channel has its own method.
 struct ChannelView {
   io::ChannelSpec spec;
   render::Camera camera;
   std::unique_ptr<gl::RenderTarget> target;
+  std::unique_ptr<render::TerrainMethod> method;
+  std::unique_ptr<render::FrameRenderer> renderer;
   render::ViewResult last;
   double render_ms = 0.0;  // LOD update + passes of the last frame
 };
@@ -59,7 +63,8 @@ class ScenarioRunner {
   const io::Scenario& scenario() const { return scenario_; }
   const terrain::Heightfield& heightfield() const { return heightfield_; }
   const gl::GlContext& context() const { return *context_; }
-  render::TerrainMethod& method() { return *method_; }
+  // The first channel's method (tests and benchmarks look at its state).
+  render::TerrainMethod& method() { return *channels_.front().method; }
   int frame_count() const { return frame_count_; }
   double load_ms() const { return load_ms_; }
   std::vector<ChannelView>& channels() { return channels_; }
@@ -86,8 +91,6 @@ class ScenarioRunner {
   std::unique_ptr<io::PathInterpolator> path_;
   std::unique_ptr<gl::GlContext> context_;
   std::unique_ptr<render::TerrainScene> scene_;
-  std::unique_ptr<render::TerrainMethod> method_;
-  std::unique_ptr<render::FrameRenderer> renderer_;
   std::vector<ChannelView> channels_;
   int frame_count_ = 0;
 };
