@@ -30,6 +30,24 @@ terrain::HeightPyramid::MinMax rect_minmax(const terrain::HeightPyramid& p, int 
   return m;
 }
 
+// Whether any part of the terrain can be in view: the frustum against the
+// min/max pyramid's boxes, descending to nodes of 64 cells. The single
+// whole-DEM box is too coarse (it always straddles the planes through the eye).
+bool terrain_in_view(const terrain::HeightPyramid& p, const terrain::Heightfield& hf, const Frustum& frustum,
+                     const glm::dvec3& eye, int level, int i, int j) {
+  const int size = 1 << level;
+  const int i0 = i * size, j0 = j * size;
+  const int i1 = std::min(i0 + size, p.cells_x()), j1 = std::min(j0 + size, p.cells_y());
+  const auto mm = p.node(level, i, j);
+  const glm::dvec3 lo(i0 * hf.spacing_x_m, j0 * hf.spacing_y_m, mm.lo), hi(i1 * hf.spacing_x_m, j1 * hf.spacing_y_m, mm.hi);
+  if (!frustum.intersects_box(lo - eye, hi - eye)) return false;
+  if (level == 0 || size <= 64) return true;
+  for (int cj = 2 * j; cj <= 2 * j + 1 && cj < p.level_height(level - 1); ++cj)
+    for (int ci = 2 * i; ci <= 2 * i + 1 && ci < p.level_width(level - 1); ++ci)
+      if (terrain_in_view(p, hf, frustum, eye, level - 1, ci, cj)) return true;
+  return false;
+}
+
 GLuint make_query() {
   GLuint q = 0;
   glCreateQueries(GL_SAMPLES_PASSED, 1, &q);
@@ -202,8 +220,8 @@ double TwoLevelMethod::read_previous_ratio() {
 void TwoLevelMethod::update(const Camera& camera) {
   const auto& hf = scene_.heightfield();
   const Frustum frustum = frustum_of(camera);
-  const glm::dvec3 dem_lo(0.0, 0.0, hf.min_m), dem_hi(hf.extent_x_m(), hf.extent_y_m(), hf.max_m);
-  terrain_visible_ = frustum.intersects_box(dem_lo - camera.position, dem_hi - camera.position);
+  terrain_visible_ = !pyramid_.empty() &&
+                     terrain_in_view(pyramid_, hf, frustum, camera.position, pyramid_.num_levels() - 1, 0, 0);
 
   const double ratio = read_previous_ratio();
   if (ratio >= 0.0) last_ratio_ = ratio;
