@@ -17,6 +17,8 @@ packages=(
   python3
   # fuzzing
   clang libclang-rt-14-dev
+  # Modbus TCP status/control
+  libmodbus-dev mbpoll
 )
 
 missing=()

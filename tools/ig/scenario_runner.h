@@ -68,6 +68,8 @@ class ScenarioRunner {
   int frame_count() const { return frame_count_; }
   double load_ms() const { return load_ms_; }
   std::vector<ChannelView>& channels() { return channels_; }
+  // The shared terrain scene (shading parameters, e.g. fog, set at run time).
+  render::TerrainScene& scene() { return *scene_; }
 
   // Renders frame k (sim time k * step, pose from the scenario's path) for
   // every channel into its target.

@@ -10,10 +10,12 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +27,10 @@
 #include "pose_feed.h"
 #include "run_outputs.h"
 #include "scenario_runner.h"
+#ifdef IG_WITH_MODBUS
+#include "io/control/modbus_server.h"
+#include "render/twolevel_method.h"
+#endif
 
 namespace ig::app {
 namespace {
@@ -33,16 +39,17 @@ constexpr const char* kUsage =
     "usage: ig serve [--config FILE] [--udp ADDR:PORT] [--cigi ADDR:PORT [--cigi-reply HOST:PORT]]\n"
     "                [--fgfdm ADDR:PORT] [--multicast GROUP] [--channel NAME] [--headless | --window]\n"
     "                [--out DIR] [--frames N | --seconds S] [--rate HZ] [--record FILE]\n"
-    "                [--size WxH] [--method NAME] [--quiet]\n"
+    "                [--size WxH] [--method NAME] [--modbus ADDR:PORT] [--quiet]\n"
     "  ADDR may be empty (':5500' = all interfaces); with --multicast GROUP every\n"
-    "  source binds GROUP:PORT and joins the group on loopback.\n";
+    "  source binds GROUP:PORT and joins the group on loopback.\n"
+    "  --modbus ADDR:PORT: Modbus TCP status/control server (docs/modbus.md).\n";
 
 std::atomic<bool> g_stop{false};
 extern "C" void on_signal(int) { g_stop = true; }
 
 struct Args {
   std::string config;
-  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record;
+  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus;
   std::string out_dir;
   std::optional<int> frames;
   std::optional<double> seconds;
@@ -65,6 +72,7 @@ Args parse_args(const std::vector<std::string>& a) {
     else if (f == "--multicast") args.multicast = r.value(f);
     else if (f == "--channel") args.channel = r.value(f);
     else if (f == "--record") args.record = r.value(f);
+    else if (f == "--modbus") args.modbus = r.value(f);
     else if (f == "--out") args.out_dir = r.value(f);
     else if (f == "--frames") args.frames = r.positive_int(f);
     else if (f == "--seconds") args.seconds = r.positive_double(f);
@@ -85,6 +93,17 @@ Args parse_args(const std::vector<std::string>& a) {
   if (args.cigi_reply && !args.cigi) throw UsageError("--cigi-reply needs --cigi");
   if (!args.udp && !args.cigi && !args.fgfdm) throw UsageError("no pose source: give --udp, --cigi or --fgfdm");
   args.run.headless = !window;
+#ifdef IG_WITH_MODBUS
+  if (args.modbus) {
+    try {
+      io::control::parse_modbus_endpoint(*args.modbus);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--modbus ") + e.what());
+    }
+  }
+#else
+  if (args.modbus) throw UsageError("--modbus: this ig was built without Modbus (IG_WITH_MODBUS=OFF)");
+#endif
   return args;
 }
 
@@ -98,6 +117,111 @@ struct Source {
   io::Protocol protocol;
   std::unique_ptr<io::net::UdpReceiver> socket;
 };
+
+#ifdef IG_WITH_MODBUS
+// ig serve's side of the Modbus server (docs/modbus.md): controls applied at
+// the frame boundary, a status snapshot published after every frame. The
+// server thread is never waited on: both are short copies under its mutex.
+class ModbusLink {
+ public:
+  ModbusLink(const std::string& endpoint, ScenarioRunner& runner, bool quiet) : runner_(runner), quiet_(quiet) {
+    const auto& r = runner.scenario().render;
+    active_.a1 = float(r.twolevel.a1);
+    active_.a2 = float(r.twolevel.a2);
+    active_.alpha = float(r.twolevel.alpha);
+    active_.level0_budget = std::uint32_t(r.twolevel.level0_budget);
+    active_.fog_visibility_m = float(r.fog_visibility_m);
+    server_ = std::make_unique<io::control::ModbusServer>(io::control::parse_modbus_endpoint(endpoint), active_);
+    if (!quiet_)
+      std::cerr << "ig serve: Modbus TCP on " << endpoint.substr(0, endpoint.rfind(':')) << ":" << server_->port()
+                << "\n";
+  }
+
+  // Before rendering: freeze, wireframe, thresholds, fog; true = capture this frame.
+  bool apply_controls() {
+    const auto u = server_->take_controls();
+    const auto& c = u.controls;
+    frozen_ = c.freeze;
+    wireframe_ = c.wireframe;
+    for (auto& ch : runner_.channels()) {
+      ch.renderer->set_wireframe(c.wireframe);
+      if (u.thresholds)
+        if (auto* t = dynamic_cast<render::TwoLevelMethod*>(ch.method.get())) t->set_thresholds(c.a1, c.a2);
+    }
+    if (u.fog) runner_.scene().set_fog_visibility(c.fog_visibility_m);
+    if (u.rebuild) {
+      // Level0 and the band are built with the method; a rebuild at run time
+      // is not implemented: the values are kept and flagged pending_rebuild.
+      pending_rebuild_ = c.alpha != active_.alpha || c.level0_budget != active_.level0_budget;
+      if (!quiet_ && pending_rebuild_)
+        std::cerr << "ig serve: modbus: band_alpha / level0_budget stored, applied on the next rebuild\n";
+    }
+    return u.capture;
+  }
+  bool frozen() const { return frozen_; }
+
+  void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, double pose_age_ms,
+               bool last) {
+    namespace ctl = io::control;
+    const double frame_us = (frame_end_s - frame_start_s) * 1e6;
+    window_.push_back({frame_end_s, frame_us});
+    while (!window_.empty() && window_.front().first < frame_end_s - 1.0) window_.erase(window_.begin());
+    std::vector<double> v;
+    for (const auto& w : window_) v.push_back(w.second);
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+
+    ctl::IgStatus s;
+    const bool received = !feed.intake().last_source().empty();
+    s.state = last ? ctl::IgState::Stopping
+              : frozen_ ? ctl::IgState::Frozen
+              : received ? ctl::IgState::Running
+                         : ctl::IgState::WaitingPose;
+    s.frame_counter = std::uint32_t(frames);
+    s.last_frame_us = std::uint32_t(std::lround(frame_us));
+    s.median_frame_us = std::uint32_t(std::lround(v[v.size() / 2]));
+    const auto& ch = runner_.channels().front();
+    s.triangles = std::uint32_t(std::clamp<long long>(ch.last.method.triangles, 0, 0xFFFFFFFFLL));
+    std::uint16_t flags = 0;
+    if (auto* t = dynamic_cast<const render::TwoLevelMethod*>(ch.method.get())) {
+      s.level1_size = std::uint16_t(t->level1_size());
+      s.level1_ratio = float(t->last_ratio());
+      flags |= ctl::kFlagTwoLevel;
+    }
+    s.pose_age_ms = pose_age_ms < 0 ? 0xFFFFFFFFu : std::uint32_t(std::min(std::lround(pose_age_ms), 0xFFFFFFFEL));
+    auto counts = [&](io::Protocol p) {
+      const auto& c = feed.intake().counters(p);
+      return ctl::PacketCounts{std::uint32_t(c.ok), std::uint32_t(c.bad)};
+    };
+    s.native = counts(io::Protocol::Native);
+    s.cigi = counts(io::Protocol::Cigi);
+    s.fgfdm = counts(io::Protocol::FgNetFdm);
+    if (frozen_) flags |= ctl::kFlagFrozen;
+    if (wireframe_) flags |= ctl::kFlagWireframe;
+    if (pending_rebuild_) flags |= ctl::kFlagPendingRebuild;
+    if (received) flags |= ctl::kFlagPoseReceived;
+    s.flags = flags;
+    server_->publish(s);
+  }
+
+  nlohmann::json summary() const {
+    const auto c = server_->counters();
+    return {{"port", server_->port()},
+            {"requests", c.requests},
+            {"exceptions", c.exceptions},
+            {"writes_applied", c.writes_applied},
+            {"clients_accepted", c.clients_accepted},
+            {"clients_dropped", c.clients_dropped}};
+  }
+
+ private:
+  ScenarioRunner& runner_;
+  bool quiet_;
+  io::control::IgControls active_;  // what the IG runs with (alpha, budget: as built)
+  std::unique_ptr<io::control::ModbusServer> server_;
+  bool frozen_ = false, wireframe_ = false, pending_rebuild_ = false;
+  std::vector<std::pair<double, double>> window_;  // (frame end s, frame us) of the last second
+};
+#endif
 
 }  // namespace
 
@@ -142,6 +266,11 @@ int run_serve_command(const std::vector<std::string>& argv) {
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
                    "packets (CIGI, FlightGear, native geodetic) are counted as rejected\n";
     const io::Pose initial = runner.pose_at(0.0);
+#ifdef IG_WITH_MODBUS
+    std::unique_ptr<ModbusLink> modbus;
+    if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, args.quiet);
+#endif
+    std::optional<io::Pose> last_pose;  // for freeze
 
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
@@ -161,8 +290,18 @@ int run_serve_command(const std::vector<std::string>& argv) {
       const double frame_start = io::net::steady_now_s();
       const bool last = (args.frames && k == *args.frames - 1) ||
                         (args.seconds && frame_start - start + period >= *args.seconds) || g_stop;
+      // Controls take effect here, at the frame boundary, before rendering.
+      bool capture = false, frozen = false;
+#ifdef IG_WITH_MODBUS
+      if (modbus) {
+        capture = modbus->apply_controls();
+        frozen = modbus->frozen();
+      }
+#endif
       const auto t0 = std::chrono::steady_clock::now();
-      const io::Pose pose = feed.pose_at(frame_start, initial);
+      // Frozen: the last pose again; the sources are still drained and counted.
+      const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial);
+      last_pose = pose;
       const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
       if (cigi_reply) {
@@ -171,7 +310,16 @@ int run_serve_command(const std::vector<std::string>& argv) {
             std::uint32_t(std::llround((frame_start - start) * 1e5)), io::wire::kCigiModeOperate, false);
         cigi_reply->send(sof);
       }
-      outputs.frame(runner, f, false, last, total, [&](std::vector<stats::Cell>& row) { feed.append_columns(row); });
+      double pose_age_ms = -1.0;
+      outputs.frame(runner, f, capture, last, total, [&](std::vector<stats::Cell>& row) {
+        feed.append_columns(row);
+        for (const auto& c : row)
+          if (c.name == "pose_age_ms") pose_age_ms = std::atof(c.text.c_str());
+      });
+#ifdef IG_WITH_MODBUS
+      if (modbus) modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, pose_age_ms, last);
+#endif
+      (void)pose_age_ms;
       if (last || (!runner.context().headless() && runner.window_closed())) break;
       if (runner.context().headless()) {  // own rate; a window paces on vsync
         next_tick += period;
@@ -182,6 +330,9 @@ int run_serve_command(const std::vector<std::string>& argv) {
     }
     nlohmann::json extra = {{"pose_intake", feed.summary()}, {"rate_hz", args.rate_hz}};
     if (recorder) extra["recording"] = {{"file", *args.record}, {"datagrams", recorder->count()}};
+#ifdef IG_WITH_MODBUS
+    if (modbus) extra["modbus"] = modbus->summary();
+#endif
     return outputs.finish(runner, config, extra);
   } catch (const std::exception& e) {
     std::cerr << "ig serve: " << e.what() << "\n";

@@ -32,7 +32,9 @@ ViewResult FrameRenderer::render(const Camera& camera, const gl::RenderTarget& t
   glClearColor(0.f, 0.f, 0.f, 1.f);
   glClearDepth(0.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   r.method = method_.draw(camera, target);
+  if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glFinish();
   r.timings.terrain_ms = ms_since(t0);
 

@@ -27,12 +27,16 @@ class FrameRenderer {
  public:
   FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
   ViewResult render(const Camera& camera, const gl::RenderTarget& target);
+  // Terrain drawn as lines (glPolygonMode GL_LINE) instead of filled; the sky stays filled.
+  void set_wireframe(bool on) { wireframe_ = on; }
+  bool wireframe() const { return wireframe_; }
 
  private:
   const TerrainScene& scene_;
   TerrainMethod& method_;
   gl::ShaderProgram sky_;
   GLuint empty_vao_ = 0;
+  bool wireframe_ = false;
 };
 
 }  // namespace ig::render

@@ -39,6 +39,8 @@ class TerrainScene {
 
   const terrain::Heightfield& heightfield() const { return heightfield_; }
   const ShadingParams& shading() const { return shading_; }
+  // Fog visibility in metres (0 = no fog); used from the next bind_common.
+  void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
   GLuint height_texture() const { return height_tex_; }
   bool has_imagery() const { return imagery_tex_ != 0; }
   double upload_ms() const { return upload_ms_; }

@@ -1,0 +1,73 @@
+#pragma once
+// What the Modbus server (io/control/modbus_server.h) publishes and accepts:
+// a status snapshot the frame loop copies in once per frame, and the control
+// values an instructor station sets. Plain values, no GL, no libmodbus, so
+// the frame loop and the tests use them without the server.
+
+#include <cstdint>
+
+namespace ig::io::control {
+
+// IG state (input register 0).
+enum class IgState : std::uint16_t {
+  Starting = 0,     // no frame rendered yet
+  WaitingPose = 1,  // rendering the scenario's initial pose: no packet received yet
+  Running = 2,      // rendering received poses
+  Frozen = 3,       // freeze on: the last pose is rendered again, pose input ignored
+  Stopping = 4,     // last frame rendered, process exiting
+};
+
+// Bits of the status flags (input register 1).
+enum StatusFlag : std::uint16_t {
+  kFlagFrozen = 1u << 0,
+  kFlagWireframe = 1u << 1,
+  kFlagPendingRebuild = 1u << 2,   // alpha / Level0 budget written, not yet in effect (next rebuild)
+  kFlagPoseReceived = 1u << 3,     // at least one pose packet accepted
+  kFlagCapturePending = 1u << 4,   // a capture trigger waits for the next frame
+  kFlagTwoLevel = 1u << 5,         // the channel's method is twolevel (Level1 registers meaningful)
+};
+
+struct PacketCounts {
+  std::uint32_t ok = 0;
+  std::uint32_t bad = 0;
+};
+
+// One frame's status, published by the frame loop after the frame.
+struct IgStatus {
+  IgState state = IgState::Starting;
+  std::uint16_t flags = 0;
+  std::uint32_t frame_counter = 0;      // frames rendered so far
+  std::uint32_t last_frame_us = 0;      // work time of the last frame (pose, render, readback, log)
+  std::uint32_t median_frame_us = 0;    // median of the frames of the last second
+  std::uint16_t level1_size = 0;        // Level1 vertices a side (0: not twolevel)
+  float level1_ratio = -1.0f;           // R = Level1 pixels / terrain pixels (-1: not measured)
+  std::uint32_t triangles = 0;          // triangles drawn in the last frame
+  std::uint32_t pose_age_ms = 0xFFFFFFFFu;  // newest sample used -> frame start (0xFFFFFFFF: no pose)
+  PacketCounts native, cigi, fgfdm;     // cumulative accepted / rejected datagrams per source
+  std::uint32_t uptime_s = 0;           // since the server started
+  std::uint16_t modbus_clients = 0;     // filled in by the server itself
+};
+
+// The holding registers' values. The server keeps the requested values; the
+// frame loop reads them at a frame boundary and applies them.
+struct IgControls {
+  bool freeze = false;
+  bool wireframe = false;
+  float a1 = 0.50f, a2 = 0.80f;     // Level1 thresholds, 0 < a1 < a2 < 1
+  float alpha = 2000.0f;             // band factor, > 0 (applied on next rebuild)
+  std::uint32_t level0_budget = 2048;  // Level0 triangles (applied on next rebuild)
+  float fog_visibility_m = 60000.0f;   // >= 0, 0 = no fog
+  bool capture = false;                // capture-next-frame trigger
+};
+
+// What changed since the frame loop last looked (ModbusServer::take_controls).
+struct ControlUpdate {
+  IgControls controls;        // the whole current image
+  bool thresholds = false;    // a1 or a2 written
+  bool rebuild = false;       // alpha or Level0 budget written
+  bool fog = false;
+  bool capture = false;       // capture the next frame (the register is already reset to 0)
+  bool any() const { return thresholds || rebuild || fog || capture; }
+};
+
+}  // namespace ig::io::control
