@@ -28,6 +28,7 @@ uniform float u_alpha;          // coverage marker written to alpha
 uniform int u_mode;
 uniform vec4 u_level1_box;       // Level1 square in samples: min.xy, max.xy
 uniform vec2 u_level1_center;    // band coordinates are relative to this (samples)
+uniform bool u_band_valid;       // the band pass ran this frame
 uniform sampler2D u_band;        // RGBA16F: rg = uv1 - centre, b = beta, a = mask
 uniform sampler2D u_band_depth;  // the band pass's depth
 uniform vec2 u_near_far;
@@ -76,7 +77,7 @@ void main() {
     if (all(greaterThanEqual(v_sample, u_level1_box.xy)) && all(lessThanEqual(v_sample, u_level1_box.zw)))
       discard;
     ivec2 px = ivec2(gl_FragCoord.xy);
-    vec4 band = texelFetch(u_band, px, 0);
+    vec4 band = u_band_valid ? texelFetch(u_band, px, 0) : vec4(0.0);
     if (band.a > 0.5) {
       float band_d = view_distance(texelFetch(u_band_depth, px, 0).r);
       float own_d = view_distance(gl_FragCoord.z);

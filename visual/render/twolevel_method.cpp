@@ -364,12 +364,12 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
 
     // Pass 2: band into its own RGBA16F target (uv relative to the centre, beta, mask).
     ensure_band_target(target.width(), target.height());
-    glBindFramebuffer(GL_FRAMEBUFFER, band_fbo_);
-    const float clear_band[4] = {0, 0, 0, 0};
-    const float clear_depth = 0.0f;
-    glClearNamedFramebufferfv(band_fbo_, GL_COLOR, 0, clear_band);
-    glClearNamedFramebufferfv(band_fbo_, GL_DEPTH, 0, &clear_depth);
-    if (band_visible_) {
+    if (band_visible_) {  // else Level0 ignores the band target (u_band_valid), so no clear either
+      glBindFramebuffer(GL_FRAMEBUFFER, band_fbo_);
+      const float clear_band[4] = {0, 0, 0, 0};
+      const float clear_depth = 0.0f;
+      glClearNamedFramebufferfv(band_fbo_, GL_COLOR, 0, clear_band);
+      glClearNamedFramebufferfv(band_fbo_, GL_DEPTH, 0, &clear_depth);
       SizeMeshes& m = meshes_for(n, band_w_);
       upload_beta_template(n, band_w_);
       band_program_.use();
@@ -403,6 +403,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     glBindTextureUnit(3, band_color_);
     glBindTextureUnit(4, band_depth_);
     level0_program_.set("u_band", 3);
+    level0_program_.set("u_band_valid", band_visible_ ? 1 : 0);
     level0_program_.set("u_band_depth", 4);
     level0_program_.set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
     level0_program_.set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
@@ -412,14 +413,18 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     passes.push_back("level0");
 
     // Coverage count for next frame's size decision (results read next frame).
+    // Every 4th pixel each way: 1/16 of the fragments; both counts use the same samples.
+    constexpr int kStep = 4;
+    const int cw = (target.width() + kStep - 1) / kStep, ch = (target.height() + kStep - 1) / kStep;
     glBindFramebuffer(GL_FRAMEBUFFER, count_fbo_);
-    glViewport(0, 0, target.width(), target.height());
-    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, target.width());
-    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, target.height());
+    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, cw);
+    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, ch);
+    glViewport(0, 0, cw, ch);
     glDisable(GL_DEPTH_TEST);
     count_program_.use();
     glBindTextureUnit(5, target.color_texture());
     count_program_.set("u_color", 5);
+    count_program_.set("u_step", kStep);
     glBindVertexArray(empty_vao_);
     for (int k = 0; k < 2; ++k) {
       count_program_.set("u_threshold", k == 0 ? 0.75f : 0.25f);
