@@ -7,6 +7,7 @@
 
 #include "ig/scenario_runner.h"
 #include "io/scenario.h"
+#include "render/twolevel_method.h"
 
 namespace {
 
@@ -53,7 +54,11 @@ TEST(Channels, EachChannelHasItsOwnLodState) {
   runner.render_frame(0);
   auto& ch = runner.channels();
   EXPECT_NE(ch[0].method.get(), ch[1].method.get());
-  EXPECT_EQ(ch[0].last.method.passes.find("level0") != std::string::npos, true);
+  // Each channel centres its Level1 on where its own view looks.
+  const auto* left = dynamic_cast<ig::render::TwoLevelMethod*>(ch[0].method.get());
+  const auto* centre = dynamic_cast<ig::render::TwoLevelMethod*>(ch[1].method.get());
+  ASSERT_TRUE(left && centre);
+  EXPECT_GT(glm::length(left->look_at().point - centre->look_at().point), 100.0);
 }
 
 }  // namespace

@@ -45,22 +45,27 @@ GLuint compile(GLenum stage, const std::string& path) {
 }  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& dir, const std::string& vertex_file,
-                             const std::string& fragment_file) {
-  const std::string vpath = dir + "/" + vertex_file, fpath = dir + "/" + fragment_file;
-  GLuint vs = compile(GL_VERTEX_SHADER, vpath);
-  GLuint fs = 0;
+                             const std::string& fragment_file)
+    : ShaderProgram(dir, vertex_file, std::vector<std::string>{fragment_file}) {}
+
+ShaderProgram::ShaderProgram(const std::string& dir, const std::string& vertex_file,
+                             const std::vector<std::string>& fragment_files) {
+  std::vector<GLuint> shaders;
+  std::string names = vertex_file;
   try {
-    fs = compile(GL_FRAGMENT_SHADER, fpath);
+    shaders.push_back(compile(GL_VERTEX_SHADER, dir + "/" + vertex_file));
+    for (const auto& f : fragment_files) {
+      shaders.push_back(compile(GL_FRAGMENT_SHADER, dir + "/" + f));
+      names += " + " + f;
+    }
   } catch (...) {
-    glDeleteShader(vs);
+    for (GLuint sh : shaders) glDeleteShader(sh);
     throw;
   }
   id_ = glCreateProgram();
-  glAttachShader(id_, vs);
-  glAttachShader(id_, fs);
+  for (GLuint sh : shaders) glAttachShader(id_, sh);
   glLinkProgram(id_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  for (GLuint sh : shaders) glDeleteShader(sh);
   GLint ok = 0;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (!ok) {
@@ -70,7 +75,7 @@ ShaderProgram::ShaderProgram(const std::string& dir, const std::string& vertex_f
     glGetProgramInfoLog(id_, len, nullptr, log.data());
     glDeleteProgram(id_);
     id_ = 0;
-    throw GlError("program " + vpath + " + " + fragment_file + ": link failed: " + log);
+    throw GlError("program " + dir + "/{" + names + "}: link failed: " + log);
   }
 }
 

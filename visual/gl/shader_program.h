@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include <string>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -19,6 +20,10 @@ class ShaderProgram {
   // Loads <dir>/<vertex_file> and <dir>/<fragment_file>. Throws GlError.
   ShaderProgram(const std::string& dir, const std::string& vertex_file,
                 const std::string& fragment_file);
+  // Several fragment shader objects linked into one stage (one holds main,
+  // the others shared functions such as terrain_shading.frag).
+  ShaderProgram(const std::string& dir, const std::string& vertex_file,
+                const std::vector<std::string>& fragment_files);
   ~ShaderProgram();
   ShaderProgram(ShaderProgram&& o) noexcept : id_(o.id_) { o.id_ = 0; }
   ShaderProgram& operator=(ShaderProgram&& o) noexcept;

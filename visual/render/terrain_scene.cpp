@@ -77,7 +77,6 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
   const double k = shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;
   p.set("u_fog_k", float(k));
   p.set("u_view_proj", camera.view_projection());
-  p.set("u_mode", 0);
   p.set("u_alpha", 1.0f);
 }
 

@@ -144,8 +144,10 @@ struct TwoLevelMethod::SizeMeshes {
 TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
     : scene_(scene),
       options_(options),
-      grid_program_(shader_dir, "terrain_grid.vert", "terrain.frag"),
-      level0_program_(shader_dir, "level0.vert", "terrain.frag"),
+      grid_program_(shader_dir, "terrain_grid.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
+      level0_program_(shader_dir, "level0.vert", std::vector<std::string>{"terrain_shading.frag", "level0_blend.frag", "level0.frag"}),
+      level0_clipped_program_(shader_dir, "level0.vert",
+                              std::vector<std::string>{"terrain_shading.frag", "level0_blend.frag", "level0_clipped.frag"}),
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
       pyramid_(scene.heightfield()),
@@ -162,7 +164,8 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
   glCreateBuffers(1, &level0_vbo_);
   glNamedBufferStorage(level0_vbo_, GLsizeiptr(samples.size() * 4), samples.data(), 0);
   glCreateBuffers(1, &level0_ibo_);
-  glNamedBufferStorage(level0_ibo_, GLsizeiptr(level0_.indices.size() * 4), level0_.indices.data(), 0);
+  glNamedBufferStorage(level0_ibo_, GLsizeiptr(level0_.indices.size() * 4), level0_.indices.data(),
+                       GL_DYNAMIC_STORAGE_BIT);
   glCreateVertexArrays(1, &level0_vao_);
   glVertexArrayVertexBuffer(level0_vao_, 0, level0_vbo_, 0, 8);
   glVertexArrayElementBuffer(level0_vao_, level0_ibo_);
@@ -329,6 +332,28 @@ void TwoLevelMethod::update_walls(SizeMeshes& m, int n) {
   glNamedBufferSubData(m.wall_vbo[1], 0, GLsizeiptr(m.wall_z.size() * sizeof(glm::vec2)), m.wall_z.data());
 }
 
+void TwoLevelMethod::classify_level0(int n) {
+  // Triangles inside the square are never drawn; those outside need no
+  // discard, so the depth test can reject their hidden fragments early.
+  const glm::ivec2 lo = origin_, hi = origin_ + (n - 1);
+  std::vector<std::uint32_t>& out = level0_frame_indices_;
+  out.clear();
+  std::vector<std::uint32_t> crossing;
+  const auto& idx = level0_.indices;
+  for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+    glm::ivec2 a = level0_.samples[idx[t]], b = level0_.samples[idx[t + 1]], c = level0_.samples[idx[t + 2]];
+    const glm::ivec2 mn = glm::min(a, glm::min(b, c)), mx = glm::max(a, glm::max(b, c));
+    if (mn.x >= lo.x && mn.y >= lo.y && mx.x <= hi.x && mx.y <= hi.y) continue;  // inside
+    const bool outside = mx.x <= lo.x || mn.x >= hi.x || mx.y <= lo.y || mn.y >= hi.y;
+    auto& dst = outside ? out : crossing;
+    dst.insert(dst.end(), {idx[t], idx[t + 1], idx[t + 2]});
+  }
+  level0_outside_indices_ = GLsizei(out.size());
+  level0_crossing_indices_ = GLsizei(crossing.size());
+  out.insert(out.end(), crossing.begin(), crossing.end());
+  if (!out.empty()) glNamedBufferSubData(level0_ibo_, 0, GLsizeiptr(out.size() * 4), out.data());
+}
+
 MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarget& target) {
   const auto& hf = scene_.heightfield();
   const int n = controller_.size();
@@ -388,29 +413,36 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
 
     // Pass 3: Level0 into the frame, outside the Level1 square, depth-tested.
     target.bind();
-    level0_program_.use();
-    scene_.bind_common(level0_program_, camera);
+    classify_level0(n);
     const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
     const glm::ivec2 eye_sample(int(std::floor(camera.position.x / spacing.x)),
                                 int(std::floor(camera.position.y / spacing.y)));
-    level0_program_.set("u_eye_sample", eye_sample);
-    level0_program_.set("u_eye_frac", glm::vec3(camera.position.x - eye_sample.x * spacing.x,
-                                                camera.position.y - eye_sample.y * spacing.y, camera.position.z));
-    level0_program_.set("u_mode", 1);
-    level0_program_.set("u_alpha", 0.5f);
-    level0_program_.set("u_level1_box", box);
-    level0_program_.set("u_level1_center", centre);
     glBindTextureUnit(3, band_color_);
     glBindTextureUnit(4, band_depth_);
-    level0_program_.set("u_band", 3);
-    level0_program_.set("u_band_valid", band_visible_ ? 1 : 0);
-    level0_program_.set("u_band_depth", 4);
-    level0_program_.set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
-    level0_program_.set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
     glBindVertexArray(level0_vao_);
-    glDrawElements(GL_TRIANGLES, GLsizei(level0_.indices.size()), GL_UNSIGNED_INT, nullptr);
-    level0_tris = level0_.triangle_count;
-    passes.push_back("level0");
+    GLsizeiptr first = 0;
+    for (auto* program : {&level0_program_, &level0_clipped_program_}) {
+      const GLsizei count = program == &level0_program_ ? level0_outside_indices_ : level0_crossing_indices_;
+      if (count > 0) {
+        program->use();
+        scene_.bind_common(*program, camera);
+        program->set("u_eye_sample", eye_sample);
+        program->set("u_eye_frac", glm::vec3(camera.position.x - eye_sample.x * spacing.x,
+                                             camera.position.y - eye_sample.y * spacing.y, camera.position.z));
+        program->set("u_alpha", 0.5f);
+        program->set("u_level1_box", box);
+        program->set("u_level1_center", centre);
+        program->set("u_band", 3);
+        program->set("u_band_depth", 4);
+        program->set("u_band_valid", band_visible_ ? 1 : 0);
+        program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
+        program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
+        glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * 4));
+      }
+      first += count;
+    }
+    level0_tris = (level0_outside_indices_ + level0_crossing_indices_) / 3;
+    if (level0_tris > 0) passes.push_back("level0");
 
     // Coverage count for next frame's size decision (results read next frame).
     // Every 4th pixel each way: 1/16 of the fragments; both counts use the same samples.

@@ -65,11 +65,16 @@ class TwoLevelMethod final : public TerrainMethod {
 
   const TerrainScene& scene_;
   TwoLevelOptions options_;
-  gl::ShaderProgram grid_program_, level0_program_, band_program_, count_program_;
+  gl::ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_, count_program_;
   terrain::HeightPyramid pyramid_;
   lod::Level0Mesh level0_;
   lod::Level0HeightQuery level0_heights_;
   GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
+  // Per frame: Level0 triangles wholly outside Level1's square, then those
+  // crossing it (drawn with the discarding program); inside ones are skipped.
+  std::vector<std::uint32_t> level0_frame_indices_;
+  GLsizei level0_outside_indices_ = 0, level0_crossing_indices_ = 0;
+  void classify_level0(int n);
   GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
   std::map<std::pair<int, int>, std::unique_ptr<SizeMeshes>> size_meshes_;
   lod::Level1SizeController controller_;

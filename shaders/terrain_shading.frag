@@ -1,0 +1,47 @@
+#version 450 core
+// Terrain shading shared by every LOD method (linked into each terrain
+// program). The colour of a pixel is a function of its DEM texture coordinate
+// (sample space) and its distance only: per-pixel normal and height from the
+// full-resolution height texture, a height and slope colour ramp (or an
+// imagery texture), one directional light, fog. So methods differ only in
+// where each pixel's coordinate lands.
+uniform sampler2D u_height;     // R32F, linear filtering for normals
+uniform sampler2D u_imagery;    // RGB draped over the DEM (only when u_has_imagery)
+uniform bool u_has_imagery;
+uniform ivec2 u_dem_size;
+uniform vec2 u_spacing;
+uniform vec2 u_height_range;    // DEM min, max (m)
+uniform vec3 u_sun_dir;         // towards the sun, normalised
+uniform vec3 u_fog_color;
+uniform float u_fog_k;          // fog factor 1 - exp(-(k d)^2); 0 = no fog
+
+float height_at(vec2 s) {
+  return textureLod(u_height, (s + 0.5) / vec2(u_dem_size), 0.0).r;
+}
+
+vec3 ramp(float h01, float slope) {
+  vec3 low = vec3(0.36, 0.45, 0.25);    // valley vegetation
+  vec3 mid = vec3(0.47, 0.42, 0.30);    // dry slopes
+  vec3 rock = vec3(0.52, 0.50, 0.48);
+  vec3 snow = vec3(0.93, 0.94, 0.96);
+  vec3 c = mix(low, mid, smoothstep(0.15, 0.45, h01));
+  c = mix(c, rock, smoothstep(0.45, 0.75, h01));
+  c = mix(c, rock, smoothstep(0.55, 0.85, slope));
+  float snow_line = 0.82 + 0.1 * slope;
+  return mix(c, snow, smoothstep(snow_line, snow_line + 0.06, h01));
+}
+
+vec3 shade(vec2 s, float dist) {
+  float hl = height_at(s - vec2(1, 0)), hr = height_at(s + vec2(1, 0));
+  float hd = height_at(s - vec2(0, 1)), hu = height_at(s + vec2(0, 1));
+  vec3 n = normalize(vec3(-(hr - hl) / (2.0 * u_spacing.x), -(hu - hd) / (2.0 * u_spacing.y), 1.0));
+  float slope = 1.0 - n.z;
+  float span = max(u_height_range.y - u_height_range.x, 1.0);
+  float h01 = clamp((height_at(s) - u_height_range.x) / span, 0.0, 1.0);
+  vec3 albedo = u_has_imagery ? texture(u_imagery, (s + 0.5) / vec2(u_dem_size)).rgb
+                              : ramp(h01, clamp(slope * 3.0, 0.0, 1.0));
+  float diffuse = max(dot(n, u_sun_dir), 0.0);
+  vec3 color = albedo * (0.25 + 0.85 * diffuse);
+  float fog = 1.0 - exp(-(u_fog_k * dist) * (u_fog_k * dist));
+  return mix(color, u_fog_color, fog);
+}
