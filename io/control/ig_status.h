@@ -21,7 +21,7 @@ enum class IgState : std::uint16_t {
 enum StatusFlag : std::uint16_t {
   kFlagFrozen = 1u << 0,
   kFlagWireframe = 1u << 1,
-  kFlagPendingRebuild = 1u << 2,   // alpha / Level0 budget written, not yet in effect (next rebuild)
+  kFlagReserved2 = 1u << 2,        // reserved (0)
   kFlagPoseReceived = 1u << 3,     // at least one pose packet accepted
   kFlagCapturePending = 1u << 4,   // a capture trigger waits for the next frame
   kFlagTwoLevel = 1u << 5,         // the channel's method is twolevel (Level1 registers meaningful)
@@ -54,8 +54,8 @@ struct IgControls {
   bool freeze = false;
   bool wireframe = false;
   float a1 = 0.50f, a2 = 0.80f;     // Level1 thresholds, 0 < a1 < a2 < 1
-  float alpha = 2000.0f;             // band factor, > 0 (applied on next rebuild)
-  std::uint32_t level0_budget = 2048;  // Level0 triangles (applied on next rebuild)
+  float alpha = 2000.0f;             // band factor, > 0 (method rebuilt when written)
+  std::uint32_t level0_budget = 2048;  // Level0 triangles (method rebuilt when written)
   float fog_visibility_m = 60000.0f;   // >= 0, 0 = no fog
   bool capture = false;                // capture-next-frame trigger
 };

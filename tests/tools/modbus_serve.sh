@@ -76,6 +76,12 @@ echo "capture trigger -> $(basename "$png")"
 cap=$(mb -t 4 -r 12 -c 1 -1 2>&1 | sed -n 's/^\[12\]:[[:space:]]*\([0-9]*\).*/\1/p')
 [ "$cap" = "0" ] || fail "capture register reads '$cap', not 0"
 
+# 4b. Level0 budget 8192: the method is rebuilt at the next frame boundary.
+fb=$(read_u32 2)
+mbw -t 4:int -B -r 8 -- 8192 > /dev/null 2>&1 || fail "level0_budget write"
+sleep 0.5
+echo "mbpoll wrote level0_budget=8192 at frame $fb"
+
 # 5. Freeze: the pose stays while ig send keeps streaming; wireframe: flag set.
 mbw -t 4 -r 0 -- 1 > /dev/null 2>&1 || fail "freeze write"
 sleep 0.2
@@ -108,9 +114,9 @@ echo "modbus_clients now: $clients"
 wait "$send"
 wait "$pid" || fail "ig serve exited with an error"
 cat "$out/serve.log"
-python3 - "$out/serve" "$fw" "$fp1" "$fp2" "$fz1" "$fz2" <<'PY' || exit 1
+python3 - "$out/serve" "$fw" "$fp1" "$fp2" "$fz1" "$fz2" "$fb" <<'PY' || exit 1
 import csv, json, statistics, sys
-d, fw, fp1, fp2, fz1, fz2 = sys.argv[1], *map(int, sys.argv[2:7])
+d, fw, fp1, fp2, fz1, fz2, fb = sys.argv[1], *map(int, sys.argv[2:8])
 rows = list(csv.DictReader(open(d + "/frames.csv")))
 frames = [int(r["frame"]) for r in rows]
 if frames != list(range(len(frames))): print("FAIL: frames.csv rows not continuous"); sys.exit(1)
@@ -121,6 +127,10 @@ print(f"level1_n before the write (frames {max(0, fw-30)}..{fw-1}): median {stat
       f"30+ frames after: median {statistics.median(after)}, max {max(after)}")
 if not statistics.median(after) < statistics.median(before):
     print("FAIL: Level1 did not shrink after a1/a2 = 0.05/0.10"); sys.exit(1)
+l0 = lambda lo, hi: [int(float(r["level0_tris"])) for r in rows if lo <= int(r["frame"]) < hi]
+l0_before, l0_after = max(l0(0, fb)), max(l0(fb + 1, fz1))
+print(f"level0_tris drawn: at most {l0_before} before the budget write, up to {l0_after} after")
+if not l0_after > 2048 >= l0_before: print("FAIL: Level0 was not rebuilt with 8192 triangles"); sys.exit(1)
 pos = lambda lo, hi: {(r["x_m"], r["y_m"], r["z_m"], r["heading_deg"]) for r in rows if lo <= int(r["frame"]) < hi}
 frozen, moving = pos(fz1, fz2), pos(fz1 - 60, fz1 - 30)
 print(f"frozen frames {fz1}..{fz2 - 1}: {len(frozen)} distinct pose(s); 30 frames before: {len(moving)}")

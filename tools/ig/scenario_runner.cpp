@@ -132,6 +132,17 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
   return row;
 }
 
+void ScenarioRunner::rebuild_method(const io::TwoLevelSpec& twolevel) {
+  scenario_.render.twolevel = twolevel;
+  for (auto& ch : channels_) {
+    const bool wireframe = ch.renderer->wireframe();
+    ch.renderer.reset();
+    ch.method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, twolevel_options(twolevel));
+    ch.renderer = std::make_unique<render::FrameRenderer>(*scene_, *ch.method, options_.shader_dir);
+    ch.renderer->set_wireframe(wireframe);
+  }
+}
+
 void ScenarioRunner::present() {
   if (!channels_.empty()) {
     const auto& t = *channels_.front().target;

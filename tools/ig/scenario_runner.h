@@ -80,6 +80,10 @@ class ScenarioRunner {
   // Pose at simulation time t (terrain-local, metres above sea level).
   io::Pose pose_at(double t_s) const;
   void present();
+  // Rebuilds every channel's LOD method with new two-level settings (Level0
+  // budget, band factor, ...) at a frame boundary: Level0 is built again, so
+  // that frame takes the build time (docs/results.md).
+  void rebuild_method(const io::TwoLevelSpec& twolevel);
   // Windowed: the user closed the window (polls events). Headless: false.
   bool window_closed() { return context_->should_close(); }
 

@@ -149,12 +149,20 @@ class ModbusLink {
         if (auto* t = dynamic_cast<render::TwoLevelMethod*>(ch.method.get())) t->set_thresholds(c.a1, c.a2);
     }
     if (u.fog) runner_.scene().set_fog_visibility(c.fog_visibility_m);
-    if (u.rebuild) {
-      // Level0 and the band are built with the method; a rebuild at run time
-      // is not implemented: the values are kept and flagged pending_rebuild.
-      pending_rebuild_ = c.alpha != active_.alpha || c.level0_budget != active_.level0_budget;
-      if (!quiet_ && pending_rebuild_)
-        std::cerr << "ig serve: modbus: band_alpha / level0_budget stored, applied on the next rebuild\n";
+    if (u.rebuild && (c.alpha != active_.alpha || c.level0_budget != active_.level0_budget)) {
+      // Level0 and the band width are built with the method: rebuild it now,
+      // at the frame boundary (this frame pays the Level0 build).
+      io::TwoLevelSpec t = runner_.scenario().render.twolevel;
+      t.alpha = c.alpha;
+      t.level0_budget = int(c.level0_budget);
+      t.a1 = c.a1;
+      t.a2 = c.a2;
+      runner_.rebuild_method(t);
+      active_.alpha = c.alpha;
+      active_.level0_budget = c.level0_budget;
+      if (!quiet_)
+        std::cerr << "ig serve: modbus: rebuilt the LOD method (level0_budget " << c.level0_budget << ", band_alpha "
+                  << c.alpha << ")\n";
     }
     return u.capture;
   }
@@ -197,7 +205,6 @@ class ModbusLink {
     s.fgfdm = counts(io::Protocol::FgNetFdm);
     if (frozen_) flags |= ctl::kFlagFrozen;
     if (wireframe_) flags |= ctl::kFlagWireframe;
-    if (pending_rebuild_) flags |= ctl::kFlagPendingRebuild;
     if (received) flags |= ctl::kFlagPoseReceived;
     s.flags = flags;
     server_->publish(s);
@@ -218,7 +225,7 @@ class ModbusLink {
   bool quiet_;
   io::control::IgControls active_;  // what the IG runs with (alpha, budget: as built)
   std::unique_ptr<io::control::ModbusServer> server_;
-  bool frozen_ = false, wireframe_ = false, pending_rebuild_ = false;
+  bool frozen_ = false, wireframe_ = false;
   std::vector<std::pair<double, double>> window_;  // (frame end s, frame us) of the last second
 };
 #endif
