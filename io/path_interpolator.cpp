@@ -5,31 +5,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/filter/quat_util.h"
+
 namespace ig::io {
-namespace {
-
-// Spherical linear interpolation between unit quaternions a and b (b already
-// in a's hemisphere). Falls back to normalised lerp when they nearly coincide,
-// where sin(theta) -> 0 would divide by ~0.
-glm::dquat slerp_short(const glm::dquat& a, glm::dquat b, double f) {
-  double d = glm::dot(a, b);
-  if (d < 0.0) {
-    b = -b;
-    d = -d;
-  }
-  if (f <= 0.0) return a;
-  if (f >= 1.0) return b;
-  if (d > 0.9999995) {
-    return glm::normalize(a * (1.0 - f) + b * f);
-  }
-  const double theta = std::acos(std::min(d, 1.0));
-  const double s = std::sin(theta);
-  const double wa = std::sin((1.0 - f) * theta) / s;
-  const double wb = std::sin(f * theta) / s;
-  return glm::normalize(a * wa + b * wb);
-}
-
-}  // namespace
+using quat::slerp_short;
 
 PathInterpolator::PathInterpolator(const PathSpec& path) {
   if (path.keys.empty()) throw std::invalid_argument("PathInterpolator: path has no keys");

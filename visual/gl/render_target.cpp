@@ -7,9 +7,9 @@
 
 namespace ig::gl {
 
-RenderTarget::RenderTarget(int width, int height) : width_(width), height_(height) {
+RenderTarget::RenderTarget(int width, int height, GLenum color_format) : width_(width), height_(height) {
   glCreateTextures(GL_TEXTURE_2D, 1, &color_);
-  glTextureStorage2D(color_, 1, GL_RGBA8, width, height);
+  glTextureStorage2D(color_, 1, color_format, width, height);
   glCreateTextures(GL_TEXTURE_2D, 1, &depth_);
   glTextureStorage2D(depth_, 1, GL_DEPTH_COMPONENT32F, width, height);
   for (GLuint t : {color_, depth_}) {

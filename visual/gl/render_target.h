@@ -1,7 +1,7 @@
 #pragma once
-// An offscreen framebuffer: RGBA8 colour + 32-bit float depth (reversed-Z
-// needs the float depth buffer for its precision). Every frame, headless or
-// windowed, is drawn here first.
+// An offscreen framebuffer: colour (RGBA8 unless asked otherwise) + 32-bit
+// float depth (reversed-Z needs the float depth buffer for its precision).
+// Every frame, headless or windowed, is drawn here first.
 
 #include <epoxy/gl.h>
 
@@ -12,7 +12,8 @@ namespace ig::gl {
 
 class RenderTarget {
  public:
-  RenderTarget(int width, int height);
+  // color_format: GL_RGBA8 for frames; e.g. GL_RGBA16F for data targets.
+  RenderTarget(int width, int height, GLenum color_format = GL_RGBA8);
   ~RenderTarget();
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;

@@ -186,9 +186,7 @@ TwoLevelMethod::~TwoLevelMethod() {
   glDeleteVertexArrays(1, &level0_vao_);
   glDeleteBuffers(1, &level0_vbo_);
   glDeleteBuffers(1, &level0_ibo_);
-  glDeleteFramebuffers(1, &band_fbo_);
-  glDeleteTextures(1, &band_color_);
-  glDeleteTextures(1, &band_depth_);
+  band_target_.reset();
   glDeleteTextures(1, &beta_tex_);
   glDeleteFramebuffers(1, &count_fbo_);
   glDeleteVertexArrays(1, &empty_vao_);
@@ -267,25 +265,8 @@ void TwoLevelMethod::update(const Camera& camera) {
 }
 
 void TwoLevelMethod::ensure_band_target(int width, int height) {
-  if (band_fbo_ && band_target_w_ == width && band_target_h_ == height) return;
-  glDeleteFramebuffers(1, &band_fbo_);
-  glDeleteTextures(1, &band_color_);
-  glDeleteTextures(1, &band_depth_);
-  glCreateTextures(GL_TEXTURE_2D, 1, &band_color_);
-  glTextureStorage2D(band_color_, 1, GL_RGBA16F, width, height);
-  glCreateTextures(GL_TEXTURE_2D, 1, &band_depth_);
-  glTextureStorage2D(band_depth_, 1, GL_DEPTH_COMPONENT32F, width, height);
-  for (GLuint t : {band_color_, band_depth_}) {
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  }
-  glCreateFramebuffers(1, &band_fbo_);
-  glNamedFramebufferTexture(band_fbo_, GL_COLOR_ATTACHMENT0, band_color_, 0);
-  glNamedFramebufferTexture(band_fbo_, GL_DEPTH_ATTACHMENT, band_depth_, 0);
-  if (glCheckNamedFramebufferStatus(band_fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    throw gl::GlError("two-level: band target (RGBA16F + depth) incomplete");
-  band_target_w_ = width;
-  band_target_h_ = height;
+  if (!band_target_ || band_target_->width() != width || band_target_->height() != height)
+    band_target_ = std::make_unique<gl::RenderTarget>(width, height, GL_RGBA16F);
 }
 
 void TwoLevelMethod::upload_beta_template(int n, int band_w) {
@@ -390,11 +371,12 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     // Pass 2: band into its own RGBA16F target (uv relative to the centre, beta, mask).
     ensure_band_target(target.width(), target.height());
     if (band_visible_) {  // else Level0 ignores the band target (u_band_valid), so no clear either
-      glBindFramebuffer(GL_FRAMEBUFFER, band_fbo_);
+      const GLuint band_fbo = band_target_->fbo();
+      glBindFramebuffer(GL_FRAMEBUFFER, band_fbo);
       const float clear_band[4] = {0, 0, 0, 0};
       const float clear_depth = 0.0f;
-      glClearNamedFramebufferfv(band_fbo_, GL_COLOR, 0, clear_band);
-      glClearNamedFramebufferfv(band_fbo_, GL_DEPTH, 0, &clear_depth);
+      glClearNamedFramebufferfv(band_fbo, GL_COLOR, 0, clear_band);
+      glClearNamedFramebufferfv(band_fbo, GL_DEPTH, 0, &clear_depth);
       SizeMeshes& m = meshes_for(n, band_w_);
       upload_beta_template(n, band_w_);
       band_program_.use();
@@ -417,8 +399,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
     const glm::ivec2 eye_sample(int(std::floor(camera.position.x / spacing.x)),
                                 int(std::floor(camera.position.y / spacing.y)));
-    glBindTextureUnit(3, band_color_);
-    glBindTextureUnit(4, band_depth_);
+    glBindTextureUnit(3, band_target_->color_texture());
+    glBindTextureUnit(4, band_target_->depth_texture());
     glBindVertexArray(level0_vao_);
     GLsizeiptr first = 0;
     for (auto* program : {&level0_program_, &level0_clipped_program_}) {

@@ -88,8 +88,7 @@ class TwoLevelMethod final : public TerrainMethod {
   std::vector<glm::ivec2> visible_blocks_;
 
   // Band target (RGBA16F + depth), beta template, coverage queries.
-  GLuint band_fbo_ = 0, band_color_ = 0, band_depth_ = 0;
-  int band_target_w_ = 0, band_target_h_ = 0;
+  std::unique_ptr<gl::RenderTarget> band_target_;
   GLuint beta_tex_ = 0;
   std::pair<int, int> beta_for_{0, 0};
   GLuint count_fbo_ = 0, empty_vao_ = 0;

@@ -12,29 +12,33 @@ float Heightfield::at_clamped(int i, int j) const {
   return at(i, j);
 }
 
+namespace {
+// The quad holding local (x, y) (clamped onto the grid): its corner heights
+// and the position inside it.
+struct Cell {
+  double fx, fy, h00, h10, h01, h11;
+};
+Cell cell_at(const Heightfield& hf, double x_m, double y_m) {
+  const double gx = std::clamp(x_m / hf.spacing_x_m, 0.0, double(hf.width - 1));
+  const double gy = std::clamp(y_m / hf.spacing_y_m, 0.0, double(hf.height - 1));
+  const int i = std::min(int(gx), std::max(hf.width - 2, 0));
+  const int j = std::min(int(gy), std::max(hf.height - 2, 0));
+  return {gx - i, gy - j, hf.at_clamped(i, j), hf.at_clamped(i + 1, j), hf.at_clamped(i, j + 1),
+          hf.at_clamped(i + 1, j + 1)};
+}
+}  // namespace
+
 double Heightfield::sample_bilinear(double x_m, double y_m) const {
-  const double gx = std::clamp(x_m / spacing_x_m, 0.0, double(width - 1));
-  const double gy = std::clamp(y_m / spacing_y_m, 0.0, double(height - 1));
-  const int i = std::min(int(gx), std::max(width - 2, 0));
-  const int j = std::min(int(gy), std::max(height - 2, 0));
-  const double fx = gx - i, fy = gy - j;
-  const double h00 = at_clamped(i, j), h10 = at_clamped(i + 1, j);
-  const double h01 = at_clamped(i, j + 1), h11 = at_clamped(i + 1, j + 1);
-  return (h00 * (1 - fx) + h10 * fx) * (1 - fy) + (h01 * (1 - fx) + h11 * fx) * fy;
+  const Cell c = cell_at(*this, x_m, y_m);
+  return (c.h00 * (1 - c.fx) + c.h10 * c.fx) * (1 - c.fy) + (c.h01 * (1 - c.fx) + c.h11 * c.fx) * c.fy;
 }
 
 double Heightfield::sample_surface(double x_m, double y_m) const {
-  const double gx = std::clamp(x_m / spacing_x_m, 0.0, double(width - 1));
-  const double gy = std::clamp(y_m / spacing_y_m, 0.0, double(height - 1));
-  const int i = std::min(int(gx), std::max(width - 2, 0));
-  const int j = std::min(int(gy), std::max(height - 2, 0));
-  const double fx = gx - i, fy = gy - j;
-  const double h00 = at_clamped(i, j), h10 = at_clamped(i + 1, j);
-  const double h01 = at_clamped(i, j + 1), h11 = at_clamped(i + 1, j + 1);
-  if (fx >= fy)  // triangle (i,j) (i+1,j) (i+1,j+1)
-    return h00 + (h10 - h00) * fx + (h11 - h10) * fy;
+  const Cell c = cell_at(*this, x_m, y_m);
+  if (c.fx >= c.fy)  // triangle (i,j) (i+1,j) (i+1,j+1)
+    return c.h00 + (c.h10 - c.h00) * c.fx + (c.h11 - c.h10) * c.fy;
   // triangle (i,j) (i+1,j+1) (i,j+1)
-  return h00 + (h01 - h00) * fy + (h11 - h01) * fx;
+  return c.h00 + (c.h01 - c.h00) * c.fy + (c.h11 - c.h01) * c.fx;
 }
 
 void Heightfield::finalize_stats() {
