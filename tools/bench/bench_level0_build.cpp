@@ -11,24 +11,14 @@
 #include <vector>
 
 #include "lod/roam_level0_mesh.h"
+#include "bench_args.h"
 #include "terrain/dem_loader.h"
 
 int main(int argc, char** argv) {
-  std::string path;
-  int repeat = 5;
-  for (int k = 1; k < argc; ++k) {
-    const std::string a = argv[k];
-    if (a == "--repeat" && k + 1 < argc) repeat = std::max(1, std::atoi(argv[++k]));
-    else path = a;
-  }
-  if (path.empty()) {
-    const char* dir = std::getenv("IG_DEM_DIR");
-    if (!dir) {
-      std::fprintf(stderr, "bench_level0_build: give a DEM file or set IG_DEM_DIR\n");
-      return 2;
-    }
-    path = std::string(dir) + "/sierra_nevada_3arcsec_4097.tif";
-  }
+  const auto args = ig::bench::parse_dem_bench_args(argc, argv, "bench_level0_build");
+  if (!args) return 2;
+  const std::string& path = args->path;
+  const int repeat = args->repeat;
   try {
     using Clock = std::chrono::steady_clock;
     const ig::terrain::Heightfield hf = ig::terrain::load_dem(path);
