@@ -264,8 +264,10 @@ TEST(TwoLevel, SeamHasNoHolesAndErrorsAreBounded) {
     worst_mean = std::max(worst_mean, m.horizon_mean);
     worst_max = std::max(worst_max, m.horizon_max);
     worst_p95 = std::max(worst_p95, m.depth_p95);
-    // Bounds: the measured values (docs/results.md) with margin. The grazing
-    // view (12 m above ground, level) sees far terrain only Level0 draws.
+    // Bounds: the measured values (docs/twolevel.md) with margin. In the
+    // grazing view (12 m above ground, level) Level1 sits on E far ahead, so
+    // Level0 (max error ~100 m here) also draws the ground beside the eye and
+    // a nearby hill 40-90 m too low shows sky: the method's known weak spot.
     const bool grazing = v == 5;
     EXPECT_LE(double(m.holes), (grazing ? 0.15 : 0.003) * double(m.checked_px)) << names[v];
     EXPECT_LE(m.horizon_mean, grazing ? 25.0 : 2.0) << names[v];
