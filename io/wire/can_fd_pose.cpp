@@ -65,33 +65,14 @@ CanFrame encode_can_fd_pose(const PoseMessage& pose) {
 }
 
 DecodeResult decode_can_fd_pose(const CanFrame& frame) {
-  DecodeResult r;
-  if (frame.id != kCanFdPoseId || (frame.flags & (kCanFlagExtended | kCanFlagRtr | kCanFlagError)) != 0) {
-    r.reject = Reject::UnknownPacket;
-    return r;
-  }
-  if (!frame.is_fd() || frame.len < kCanFdPoseSize) {
-    r.reject = Reject::TooShort;
-    return r;
-  }
-  if (frame.len > kCanFdPoseSize) {
-    r.reject = Reject::TooLong;
-    return r;
-  }
+  if (frame.id != kCanFdPoseId || (frame.flags & (kCanFlagExtended | kCanFlagRtr | kCanFlagError)) != 0) return rejected(Reject::UnknownPacket);
+  if (!frame.is_fd() || frame.len < kCanFdPoseSize) return rejected(Reject::TooShort);
+  if (frame.len > kCanFdPoseSize) return rejected(Reject::TooLong);
   const std::uint8_t* p = frame.data.data();
   const Order le = Order::Little;
-  if (p[off::kMagic] != kCanFdPoseMagic0 || p[off::kMagic + 1] != kCanFdPoseMagic1) {
-    r.reject = Reject::BadMagic;
-    return r;
-  }
-  if (p[off::kVersion] != kCanFdPoseVersion) {
-    r.reject = Reject::BadVersion;
-    return r;
-  }
-  if (crc32(std::span<const std::uint8_t>(p, off::kCrc)) != bytes::load_u32(p + off::kCrc, le)) {
-    r.reject = Reject::BadCrc;
-    return r;
-  }
+  if (p[off::kMagic] != kCanFdPoseMagic0 || p[off::kMagic + 1] != kCanFdPoseMagic1) return rejected(Reject::BadMagic);
+  if (p[off::kVersion] != kCanFdPoseVersion) return rejected(Reject::BadVersion);
+  if (crc32(std::span<const std::uint8_t>(p, off::kCrc)) != bytes::load_u32(p + off::kCrc, le)) return rejected(Reject::BadCrc);
   PoseMessage m;
   const std::uint8_t flags = p[off::kFlags];  // unknown bits ignored
   m.frame = (flags & kCanFdFlagGeodetic) ? PoseMessage::Frame::Geodetic : PoseMessage::Frame::Local;
@@ -117,12 +98,7 @@ DecodeResult decode_can_fd_pose(const CanFrame& frame) {
       m.velocity_mps[i] = from_i16(raw, kCanFdVelocityScale);
     }
   }
-  if (auto why = validate_and_normalize(m)) {
-    r.reject = *why;
-    return r;
-  }
-  r.pose = m;
-  return r;
+  return finish_decode(m);
 }
 
 }  // namespace ig::io::wire

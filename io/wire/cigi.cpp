@@ -150,12 +150,7 @@ DecodeResult decode_cigi_host_datagram(std::span<const std::uint8_t> data) {
     m.sender_time_s = static_cast<double>(ts) * 1e-5;
     m.has_sender_time = true;
   }
-  if (auto why = validate_and_normalize(m)) {
-    r.reject = *why;
-    return r;
-  }
-  r.pose = m;
-  return r;
+  return finish_decode(m, r);
 }
 
 std::array<std::uint8_t, kCigiStartOfFrameSize> encode_cigi_start_of_frame(

@@ -56,20 +56,9 @@ std::array<std::uint8_t, kFgNetFdmSize> encode_fgnetfdm(const PoseMessage& pose)
 }
 
 DecodeResult decode_fgnetfdm(std::span<const std::uint8_t> data) {
-  DecodeResult r;
-  if (data.size() < kFgNetFdmSize) {
-    r.reject = Reject::TooShort;
-    return r;
-  }
-  if (data.size() > kFgNetFdmSize) {
-    r.reject = Reject::TooLong;
-    return r;
-  }
+  if (auto why = fixed_size_reject(data.size(), kFgNetFdmSize)) return rejected(*why);
   const std::uint8_t* p = data.data();
-  if (bytes::load_u32(p + off::kVersion, kBe) != kFgNetFdmVersion) {
-    r.reject = Reject::BadVersion;
-    return r;
-  }
+  if (bytes::load_u32(p + off::kVersion, kBe) != kFgNetFdmVersion) return rejected(Reject::BadVersion);
   PoseMessage m;
   m.frame = PoseMessage::Frame::Geodetic;
   // Check the raw values first: a huge finite radian value times 180/pi
@@ -77,14 +66,8 @@ DecodeResult decode_fgnetfdm(std::span<const std::uint8_t> data) {
   const double lon_rad = bytes::load_f64(p + off::kLongitude, kBe);
   const double lat_rad = bytes::load_f64(p + off::kLatitude, kBe);
   const double alt_m = bytes::load_f64(p + off::kAltitude, kBe);
-  if (!std::isfinite(lon_rad) || !std::isfinite(lat_rad) || !std::isfinite(alt_m)) {
-    r.reject = Reject::NonFinite;
-    return r;
-  }
-  if (std::fabs(lon_rad) > 10.0 || std::fabs(lat_rad) > 10.0) {
-    r.reject = Reject::OutOfRange;
-    return r;
-  }
+  if (!std::isfinite(lon_rad) || !std::isfinite(lat_rad) || !std::isfinite(alt_m)) return rejected(Reject::NonFinite);
+  if (std::fabs(lon_rad) > 10.0 || std::fabs(lat_rad) > 10.0) return rejected(Reject::OutOfRange);
   double lat = lat_rad * kRadToDeg, lon = lon_rad * kRadToDeg;
   // A pole or the antimeridian converted by the sender with another pi may
   // land a rounding step outside the range: clamp those, reject the rest.
@@ -103,12 +86,7 @@ DecodeResult decode_fgnetfdm(std::span<const std::uint8_t> data) {
   const double vn = get_f32(p, off::kVNorth), ve = get_f32(p, off::kVEast), vd = get_f32(p, off::kVDown);
   m.velocity_mps = glm::dvec3(ve, vn, -vd) * kFtToM;
   m.has_velocity = true;
-  if (auto why = validate_and_normalize(m)) {
-    r.reject = *why;
-    return r;
-  }
-  r.pose = m;
-  return r;
+  return finish_decode(m);
 }
 
 }  // namespace ig::io::wire

@@ -41,29 +41,12 @@ std::array<std::uint8_t, kNativeSize> encode_native(const PoseMessage& pose) {
 }
 
 DecodeResult decode_native(std::span<const std::uint8_t> data) {
-  DecodeResult r;
-  if (data.size() < kNativeSize) {
-    r.reject = Reject::TooShort;
-    return r;
-  }
-  if (data.size() > kNativeSize) {
-    r.reject = Reject::TooLong;
-    return r;
-  }
+  if (auto why = fixed_size_reject(data.size(), kNativeSize)) return rejected(*why);
   const std::uint8_t* p = data.data();
   const Order le = Order::Little;
-  if (!std::equal(kNativeMagic.begin(), kNativeMagic.end(), p + off::kMagic)) {
-    r.reject = Reject::BadMagic;
-    return r;
-  }
-  if (bytes::load_u16(p + off::kVersion, le) != kNativeVersion) {
-    r.reject = Reject::BadVersion;
-    return r;
-  }
-  if (crc32(std::span<const std::uint8_t>(p, off::kCrc)) != bytes::load_u32(p + off::kCrc, le)) {
-    r.reject = Reject::BadCrc;
-    return r;
-  }
+  if (!std::equal(kNativeMagic.begin(), kNativeMagic.end(), p + off::kMagic)) return rejected(Reject::BadMagic);
+  if (bytes::load_u16(p + off::kVersion, le) != kNativeVersion) return rejected(Reject::BadVersion);
+  if (crc32(std::span<const std::uint8_t>(p, off::kCrc)) != bytes::load_u32(p + off::kCrc, le)) return rejected(Reject::BadCrc);
 
   PoseMessage m;
   const std::uint16_t flags = bytes::load_u16(p + off::kFlags, le);  // unknown bits ignored
@@ -82,12 +65,7 @@ DecodeResult decode_native(std::span<const std::uint8_t> data) {
     if (m.has_rates) m.body_rates_dps[i] = bytes::load_f32(p + off::kBodyRates + 4 * i, le);
     if (m.has_velocity) m.velocity_mps[i] = bytes::load_f32(p + off::kVelocity + 4 * i, le);
   }
-  if (auto why = validate_and_normalize(m)) {
-    r.reject = *why;
-    return r;
-  }
-  r.pose = m;
-  return r;
+  return finish_decode(m);
 }
 
 }  // namespace ig::io::wire

@@ -133,4 +133,25 @@ bool is_valid_output(const PoseMessage& p) {
   return true;
 }
 
+DecodeResult rejected(Reject why) {
+  DecodeResult r;
+  r.reject = why;
+  return r;
+}
+
+std::optional<Reject> fixed_size_reject(std::size_t size, std::size_t expected) {
+  if (size < expected) return Reject::TooShort;
+  if (size > expected) return Reject::TooLong;
+  return std::nullopt;
+}
+
+DecodeResult finish_decode(PoseMessage pose, DecodeResult r) {
+  if (auto why = validate_and_normalize(pose)) {
+    r.reject = *why;
+    return r;
+  }
+  r.pose = pose;
+  return r;
+}
+
 }  // namespace ig::io::wire

@@ -9,6 +9,7 @@
 //   roll right-wing-down positive, (-180, 180]
 //   local positions and velocities are ENU (x east, y north, z up).
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -86,6 +87,13 @@ inline constexpr double kMaxAbsSenderTime = 1.0e12;
 //    (a pitch beyond +-90 becomes the equivalent attitude with heading and
 //    roll turned by 180); longitude folded to [-180, 180).
 std::optional<Reject> validate_and_normalize(PoseMessage& pose);
+
+// Decoder building blocks (one place for the common steps):
+// a rejection, the size check of a fixed-size datagram, and the end of a
+// decode (validate_and_normalize, then the pose or its reject).
+DecodeResult rejected(Reject why);
+std::optional<Reject> fixed_size_reject(std::size_t size, std::size_t expected);
+DecodeResult finish_decode(PoseMessage pose, DecodeResult r = {});
 
 // True when `pose` is what a decoder may return (finite, in normalised
 // ranges). Used by the tests and fuzz targets.

@@ -318,8 +318,9 @@ void TwoLevelMethod::classify_level0(int n) {
   // discard, so the depth test can reject their hidden fragments early.
   const glm::ivec2 lo = origin_, hi = origin_ + (n - 1);
   std::vector<std::uint32_t>& out = level0_frame_indices_;
+  std::vector<std::uint32_t>& crossing = level0_crossing_scratch_;
   out.clear();
-  std::vector<std::uint32_t> crossing;
+  crossing.clear();
   const auto& idx = level0_.indices;
   for (size_t t = 0; t + 2 < idx.size(); t += 3) {
     glm::ivec2 a = level0_.samples[idx[t]], b = level0_.samples[idx[t + 1]], c = level0_.samples[idx[t + 2]];

@@ -72,7 +72,7 @@ class TwoLevelMethod final : public TerrainMethod {
   GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
   // Per frame: Level0 triangles wholly outside Level1's square, then those
   // crossing it (drawn with the discarding program); inside ones are skipped.
-  std::vector<std::uint32_t> level0_frame_indices_;
+  std::vector<std::uint32_t> level0_frame_indices_, level0_crossing_scratch_;
   GLsizei level0_outside_indices_ = 0, level0_crossing_indices_ = 0;
   void classify_level0(int n);
   GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
