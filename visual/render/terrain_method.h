@@ -5,6 +5,7 @@
 // Methods never read sockets or files; they see the camera and the scene.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,14 @@
 #include "render/terrain_scene.h"
 
 namespace ig::render {
+
+// The one setting of a method that trades image error for run time (its
+// "error knob"), e.g. a screen-space tolerance in pixels or a triangle budget.
+struct ErrorKnob {
+  std::string name;  // e.g. "tau_px", "C1", "level0_budget"
+  std::string unit;  // e.g. "px", "", "triangles"
+  double value = 0.0;
+};
 
 struct MethodFrameStats {
   long long triangles = 0;  // triangles submitted this frame
@@ -33,14 +42,35 @@ class TerrainMethod {
   // Draw into the target, which the caller has bound and cleared with
   // reversed-Z depth set up. A method with offscreen passes rebinds it after.
   virtual MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) = 0;
+
+  // The knob and its value in use (nullopt: the method has none, e.g. reference).
+  virtual std::optional<ErrorKnob> knob() const { return std::nullopt; }
+  // The method's own bound on the screen-space geometric error of the last
+  // update(), in pixels, for this camera and a viewport viewport_height_px
+  // tall (nullopt: it claims none). The reference claims 0.
+  virtual std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const {
+    (void)camera;
+    (void)viewport_height_px;
+    return std::nullopt;
+  }
 };
+
+// Pixels per radian at the centre of a viewport viewport_height_px tall: a
+// geometric error e metres at distance d projects to at most e / d times this.
+double pixels_per_radian(const Camera& camera, int viewport_height_px);
 
 struct TwoLevelOptions;  // render/twolevel_method.h
 
 // Names accepted by make_method().
 std::vector<std::string> method_names();
-// Throws std::invalid_argument naming the method and the choices.
+// Throws std::invalid_argument naming the method and the choices. `knob`
+// overrides the method's error knob (its default when nullopt); methods
+// without a knob ignore it.
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
-                                           const std::string& shader_dir, const TwoLevelOptions& twolevel);
+                                           const std::string& shader_dir, const TwoLevelOptions& twolevel,
+                                           std::optional<double> knob = std::nullopt);
+// The knob values `ig bench --sweep` runs for a method, from least to most
+// accurate (empty for methods without a knob).
+std::vector<double> knob_sweep(const std::string& name);
 
 }  // namespace ig::render

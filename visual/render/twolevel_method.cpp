@@ -468,3 +468,23 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
 }
 
 }  // namespace ig::render
+
+namespace ig::render {
+
+std::optional<double> TwoLevelMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
+  const auto& hf = scene_.heightfield();
+  const int n = controller_.size();
+  const double x0 = origin_.x * hf.spacing_x_m, x1 = (origin_.x + n - 1) * hf.spacing_x_m;
+  const double y0 = origin_.y * hf.spacing_y_m, y1 = (origin_.y + n - 1) * hf.spacing_y_m;
+  const glm::dvec3& p = camera.position;
+  double d;
+  if (p.x > x0 && p.x < x1 && p.y > y0 && p.y < y1) {
+    d = std::min({p.x - x0, x1 - p.x, p.y - y0, y1 - p.y});
+  } else {
+    d = p.z - hf.sample_bilinear(p.x, p.y);
+  }
+  d = std::max(d, camera.near_m);
+  return level0_.max_error_m / d * pixels_per_radian(camera, viewport_height_px);
+}
+
+}  // namespace ig::render

@@ -45,6 +45,13 @@ class TwoLevelMethod final : public TerrainMethod {
   std::vector<std::string> column_names() const override;
   void update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
+  std::optional<ErrorKnob> knob() const override {
+    return ErrorKnob{"level0_budget", "triangles", double(options_.level0_budget)};
+  }
+  // Level1 is exact; Level0's error (max_error_m) seen from the nearest point
+  // where Level0 is drawn: the edge of the Level1 square when the eye is over
+  // it, else the ground under the eye.
+  std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
 
   // State of the last update, for tests and logs.
   int level1_size() const { return controller_.size(); }
