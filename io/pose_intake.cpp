@@ -12,6 +12,8 @@ const char* protocol_name(Protocol p) {
     case Protocol::Native: return "native";
     case Protocol::Cigi: return "cigi";
     case Protocol::FgNetFdm: return "fgfdm";
+    case Protocol::CanAerospace: return "canaerospace";
+    case Protocol::CanFd: return "canfd";
   }
   return "unknown";
 }
@@ -43,6 +45,8 @@ void PoseIntake::handle(Protocol protocol, std::span<const std::uint8_t> datagra
     case Protocol::Native: r = wire::decode_native(datagram); break;
     case Protocol::Cigi: r = wire::decode_cigi_host_datagram(datagram); break;
     case Protocol::FgNetFdm: r = wire::decode_fgnetfdm(datagram); break;
+    case Protocol::CanAerospace:
+    case Protocol::CanFd: reject(protocol, "not-a-datagram-protocol"); return;
   }
   if (r.host_frame) last_host_frame_ = r.host_frame;
   if (!r.pose) {
@@ -53,7 +57,10 @@ void PoseIntake::handle(Protocol protocol, std::span<const std::uint8_t> datagra
     reject(protocol, r.reject ? wire::reject_name(*r.reject) : "unknown");
     return;
   }
-  const wire::PoseMessage& m = *r.pose;
+  handle_pose(protocol, *r.pose, receive_time_s);
+}
+
+void PoseIntake::handle_pose(Protocol protocol, const wire::PoseMessage& m, double receive_time_s) {
   PoseSample s;
   s.receive_time_s = receive_time_s;
   if (m.has_sender_time) s.sender_time_s = m.sender_time_s;

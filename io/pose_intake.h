@@ -20,9 +20,11 @@
 
 namespace ig::io {
 
-enum class Protocol : std::uint8_t { Native = 0, Cigi = 1, FgNetFdm = 2 };
-inline constexpr int kProtocolCount = 3;
-const char* protocol_name(Protocol p);  // "native", "cigi", "fgfdm"
+// UDP formats first, then the CAN formats (which arrive already decoded by
+// io/can/can_pose_source.h, through handle_pose).
+enum class Protocol : std::uint8_t { Native = 0, Cigi = 1, FgNetFdm = 2, CanAerospace = 3, CanFd = 4 };
+inline constexpr int kProtocolCount = 5;
+const char* protocol_name(Protocol p);  // "native", "cigi", "fgfdm", "canaerospace", "canfd"
 
 struct SourceCounters {
   std::uint64_t ok = 0;   // decoded into a pose and handed to the filter
@@ -41,6 +43,9 @@ class PoseIntake {
   // Decodes one datagram received at receive_time_s (IG clock) and, when it
   // carries a valid pose, feeds the filter. Never throws.
   void handle(Protocol protocol, std::span<const std::uint8_t> datagram, double receive_time_s);
+  // A pose some transport already decoded and validated (CAN): placed and
+  // fed like a datagram's pose.
+  void handle_pose(Protocol protocol, const wire::PoseMessage& pose, double receive_time_s);
 
   const SourceCounters& counters(Protocol p) const { return counters_[int(p)]; }
   std::uint64_t total_ok() const;

@@ -137,6 +137,7 @@ CanPoseAssembler::CanPoseAssembler(CanPoseConfig config) : config_(config) {}
 void CanPoseAssembler::reset() {
   fields_ = {};
   high_ = {};
+  updated_ = 0;
 }
 
 void CanPoseAssembler::set(int field_index, double value, double t_s) {
@@ -144,7 +145,15 @@ void CanPoseAssembler::set(int field_index, double value, double t_s) {
   f.value = value;
   f.t_s = t_s;
   f.seen = true;
+  updated_ |= 1u << field_index;
   ++stats_.used;
+}
+
+std::uint32_t CanPoseAssembler::required_fields() const {
+  std::uint32_t required = can_field::kPitch | can_field::kRoll | can_field::kHeading | can_field::kAltitude;
+  const bool position_never_seen = !fields_[kFLat].seen && !fields_[kFLon].seen;
+  if (config_.require_position || !position_never_seen) required |= can_field::kLatitude | can_field::kLongitude;
+  return required;
 }
 
 void CanPoseAssembler::feed_half(int which, const CanAerospaceValue& v, double t_s) {
@@ -240,11 +249,8 @@ std::optional<PoseMessage> CanPoseAssembler::pose(double now_s, StaleFields& sta
     }
   }
   const std::uint32_t bad = stale.stale | stale.missing;
-  const std::uint32_t position_bits = can_field::kLatitude | can_field::kLongitude;
-  std::uint32_t required = can_field::kPitch | can_field::kRoll | can_field::kHeading | can_field::kAltitude;
-  const bool position_never_seen = !fields_[kFLat].seen && !fields_[kFLon].seen;
-  const bool geodetic = config_.require_position || !position_never_seen;
-  if (geodetic) required |= position_bits;
+  const std::uint32_t required = required_fields();
+  const bool geodetic = (required & can_field::kLatitude) != 0;
   if ((bad & required) != 0) {
     ++stats_.no_pose;
     return std::nullopt;

@@ -181,6 +181,12 @@ class CanPoseAssembler {
 
   const CanPoseAssemblerStats& stats() const { return stats_; }
   const CanPoseConfig& config() const { return config_; }
+  // Fields (can_field bits) updated since clear_updated(): a receiver emits a
+  // pose once every required field has a new value, i.e. once per sender cycle.
+  std::uint32_t updated_fields() const { return updated_; }
+  void clear_updated() { updated_ = 0; }
+  // The fields pose() needs now (depends on require_position and history).
+  std::uint32_t required_fields() const;
   void reset();  // forget all values (not the stats)
 
  private:
@@ -200,6 +206,7 @@ class CanPoseAssembler {
   CanPoseConfig config_;
   std::array<Field, can_field::kCount> fields_{};
   std::array<PendingHigh, 2> high_{};
+  std::uint32_t updated_ = 0;
   CanPoseAssemblerStats stats_;
 };
 

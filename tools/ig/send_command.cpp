@@ -18,6 +18,11 @@
 #include "cli_args.h"
 #include "commands.h"
 #include "io/net/udp_socket.h"
+#ifdef IG_WITH_CAN
+#include "io/can/can_socket.h"
+#include "io/wire/can_fd_pose.h"
+#include "io/wire/canaerospace.h"
+#endif
 #include "io/path_interpolator.h"
 #include "io/pose_intake.h"
 #include "io/wire/cigi.h"
@@ -33,7 +38,11 @@ constexpr const char* kUsage =
     "               [--duration S] [--geodetic] [--loss P] [--burst-loss P --burst-length N]\n"
     "               [--jitter-ms J] [--reorder P] [--duplicate P] [--corrupt P] [--seed N]\n"
     "               [--flood N] [--cigi-listen ADDR:PORT] [--log FILE] [--quiet]\n"
-    "  --flood N sends N packets as fast as the socket takes them (no pacing).\n";
+    "       ig send SCENARIO.json --can IFNAME [--can-fd] [--can-node N] [--can-altitude 320|322|332]\n"
+    "               [--can-float-position] [--rate HZ] [--duration S] [impairments as above]\n"
+    "  --flood N sends N packets as fast as the socket takes them (no pacing).\n"
+    "  --can IFNAME sends each pose as CANaerospace frames (geodetic position), or with\n"
+    "  --can-fd as one 64-byte CAN FD pose frame (docs/can.md); impairments act per pose.\n";
 
 struct Args {
   std::string scenario, to;
@@ -45,7 +54,9 @@ struct Args {
   int burst_length = 10;
   unsigned seed = 1;
   std::optional<int> flood;
-  std::optional<std::string> cigi_listen, log;
+  std::optional<std::string> cigi_listen, log, can;
+  bool can_fd = false, can_float_position = false;
+  int can_node = 1, can_altitude = 322;
   bool quiet = false;
 };
 
@@ -76,12 +87,27 @@ Args parse_args(const std::vector<std::string>& a) {
     else if (f == "--cigi-listen") args.cigi_listen = r.value(f);
     else if (f == "--log") args.log = r.value(f);
     else if (f == "--quiet") args.quiet = true;
-    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
+    else if (f == "--can") args.can = r.value(f);
+    else if (f == "--can-fd") args.can_fd = true;
+    else if (f == "--can-float-position") args.can_float_position = true;
+    else if (f == "--can-node") {
+      args.can_node = r.positive_int(f);
+      if (args.can_node > 255) throw UsageError("--can-node: expected 1..255");
+    } else if (f == "--can-altitude") {
+      args.can_altitude = r.positive_int(f);
+      if (args.can_altitude != 320 && args.can_altitude != 322 && args.can_altitude != 332)
+        throw UsageError("--can-altitude: expected 320, 322 or 332");
+    } else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
     else if (args.scenario.empty()) args.scenario = f;
     else throw UsageError("unexpected argument " + f);
   }
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (args.to.empty()) throw UsageError("missing --to ADDR:PORT");
+  if (args.to.empty() && !args.can) throw UsageError("missing --to ADDR:PORT (or --can IFNAME)");
+  if (!args.to.empty() && args.can) throw UsageError("--to and --can exclude each other");
+  if ((args.can_fd || args.can_float_position) && !args.can) throw UsageError("--can-fd / --can-float-position need --can");
+#ifndef IG_WITH_CAN
+  if (args.can) throw UsageError("--can: this ig was built without SocketCAN (IG_WITH_CAN=OFF)");
+#endif
   return args;
 }
 
@@ -97,7 +123,8 @@ struct Rng {
 struct Packet {
   double send_at_s;
   std::uint32_t order;  // tie-break keeps equal times in sequence
-  std::vector<std::uint8_t> bytes;
+  std::vector<std::uint8_t> bytes;        // UDP: one datagram
+  std::vector<io::wire::CanFrame> frames; // CAN: the pose's frames
   bool operator<(const Packet& o) const { return send_at_s != o.send_at_s ? send_at_s > o.send_at_s : order > o.order; }
 };
 
@@ -116,12 +143,32 @@ int run_send_command(const std::vector<std::string>& argv) {
     const terrain::Heightfield hf = load_terrain(scenario.terrain);
     const io::PathInterpolator path(place_path(scenario.path, hf));
     const auto to_geodetic = local_to_geodetic(hf);
-    const bool geodetic = args.geodetic || args.protocol != io::Protocol::Native;
+    // CANaerospace carries latitude / longitude only; the FD pose is like native.
+    const bool canaerospace = args.can && !args.can_fd;
+    const std::string format = args.can ? (args.can_fd ? "canfd" : "canaerospace") : io::protocol_name(args.protocol);
+    const bool geodetic = args.geodetic || canaerospace || (!args.can && args.protocol != io::Protocol::Native);
     if (geodetic && !to_geodetic)
-      throw std::runtime_error(args.scenario + ": " + io::protocol_name(args.protocol) +
+      throw std::runtime_error(args.scenario + ": " + format +
                                " needs geodetic positions but the terrain has no geographic georeference "
                                "(give terrain.generator.origin or use --protocol native)");
-    io::net::UdpSender sender(args.to);
+    std::unique_ptr<io::net::UdpSender> sender;
+    if (!args.can) sender = std::make_unique<io::net::UdpSender>(args.to);
+#ifdef IG_WITH_CAN
+    // A CAN interface that goes down or away mid-stream is reopened every
+    // 0.1 s; the poses meanwhile are counted as refused.
+    std::unique_ptr<io::can::CanSocket> can;
+    if (args.can) {
+      can = std::make_unique<io::can::CanSocket>(*args.can, 0.1);
+      if (!can->ensure_open(io::net::steady_now_s())) throw std::runtime_error("CAN " + can->last_error());
+    }
+    io::wire::CanAerospaceEncoder canas_encoder([&] {
+      io::wire::CanAerospaceEncodeConfig c;
+      c.node_id = std::uint8_t(args.can_node);
+      c.altitude_id = std::uint16_t(args.can_altitude);
+      c.position_as_double = !args.can_float_position;
+      return c;
+    }());
+#endif
     std::unique_ptr<io::net::UdpReceiver> sof_socket;
     if (args.cigi_listen) sof_socket = std::make_unique<io::net::UdpReceiver>(*args.cigi_listen);
     std::ofstream log;
@@ -136,9 +183,9 @@ int run_send_command(const std::vector<std::string>& argv) {
     const double period = 1.0 / args.rate_hz;
     const double start = io::net::steady_now_s() + 0.05;  // a moment to open the receiver's socket
 
-    // One datagram for sequence i: the path at time t, stamped with the
-    // sender's clock (the steady clock) at sender_time.
-    auto make_datagram = [&](int i, double t, double sender_time, io::Hpr& hpr, io::Pose& pose) {
+    // One datagram (or the CAN frames) for sequence i: the path at time t,
+    // stamped with the sender's clock (the steady clock) at sender_time.
+    auto make_packet = [&](int i, double t, double sender_time, io::Hpr& hpr, io::Pose& pose) {
       pose = path.sample(t);
       const double h = 0.5 * period;
       const glm::dvec3 velocity = (path.sample(t + h).position - path.sample(std::max(0.0, t - h)).position) /
@@ -159,27 +206,46 @@ int run_send_command(const std::vector<std::string>& argv) {
         m.frame = io::wire::PoseMessage::Frame::Geodetic;
         m.position = *to_geodetic(pose.position);
       }
+      Packet p{0.0, 0, {}, {}};
+#ifdef IG_WITH_CAN
+      if (args.can) {
+        if (args.can_fd) p.frames.push_back(io::wire::encode_can_fd_pose(m));
+        else canas_encoder.encode(m, p.frames);
+        return p;
+      }
+#endif
       switch (args.protocol) {
         case io::Protocol::Native: {
           const auto a = io::wire::encode_native(m);
-          return std::vector<std::uint8_t>(a.begin(), a.end());
+          p.bytes.assign(a.begin(), a.end());
+          break;
         }
         case io::Protocol::Cigi:
-          return io::wire::encode_cigi_host_datagram(std::uint32_t(i), io::wire::kCigiModeOperate, m, false);
+          p.bytes = io::wire::encode_cigi_host_datagram(std::uint32_t(i), io::wire::kCigiModeOperate, m, false);
+          break;
         case io::Protocol::FgNetFdm: {
           const auto a = io::wire::encode_fgnetfdm(m);
-          return std::vector<std::uint8_t>(a.begin(), a.end());
+          p.bytes.assign(a.begin(), a.end());
+          break;
         }
+        default: break;  // CAN formats go through --can
       }
-      return std::vector<std::uint8_t>{};
+      return p;
     };
 
     Rng rng(args.seed);
     std::uint64_t lost = 0, duplicated = 0, corrupted = 0, reordered = 0;
-    auto corrupt = [&](std::vector<std::uint8_t>& bytes) {
+    auto corrupt = [&](Packet& p) {
       if (!rng.chance(args.corrupt)) return;
       const int flips = 1 + int(rng.uniform() * 3);
-      for (int k = 0; k < flips; ++k) bytes[size_t(rng.uniform() * bytes.size())] ^= std::uint8_t(1 + rng.gen() % 255);
+      for (int k = 0; k < flips; ++k) {
+        if (!p.frames.empty()) {  // a byte of one of the pose's frames
+          auto& f = p.frames[size_t(rng.uniform() * p.frames.size())];
+          if (f.len > 0) f.data[size_t(rng.uniform() * f.len)] ^= std::uint8_t(1 + rng.gen() % 255);
+        } else {
+          p.bytes[size_t(rng.uniform() * p.bytes.size())] ^= std::uint8_t(1 + rng.gen() % 255);
+        }
+      }
       ++corrupted;
     };
     auto log_pose = [&](int i, double t, double sender_time, bool sent, const io::Pose& pose, const io::Hpr& hpr) {
@@ -200,7 +266,7 @@ int run_send_command(const std::vector<std::string>& argv) {
         io::Hpr hpr;
         io::Pose pose;
         const double t = i * period;
-        auto bytes = make_datagram(i, t, start + t, hpr, pose);
+        Packet pk = make_packet(i, t, start + t, hpr, pose);
         bool sent = true;
         if (burst_left > 0) --burst_left, sent = false;
         else if (rng.chance(args.burst_loss)) burst_left = args.burst_length - 1, sent = false;
@@ -210,15 +276,32 @@ int run_send_command(const std::vector<std::string>& argv) {
           ++lost;
           continue;
         }
-        corrupt(bytes);
+        corrupt(pk);
         double at = t + rng.uniform() * args.jitter_ms * 1e-3;
         if (rng.chance(args.reorder)) at += 1.5 * period, ++reordered;  // overtaken by the next packet
-        queue.push({at, order++, bytes});
-        if (rng.chance(args.duplicate)) queue.push({at + 0.25 * period, order++, bytes}), ++duplicated;
+        pk.send_at_s = at;
+        pk.order = order++;
+        queue.push(pk);
+        if (rng.chance(args.duplicate)) {
+          pk.send_at_s = at + 0.25 * period;
+          pk.order = order++;
+          queue.push(pk);
+          ++duplicated;
+        }
       }
     }
 
     std::uint64_t sent_ok = 0, send_failed = 0, sof_count = 0, sof_not_increasing = 0;
+    // UDP: one datagram; CAN: every frame of the pose (counted per frame).
+    auto send_packet = [&](const Packet& p) {
+#ifdef IG_WITH_CAN
+      if (can) {
+        for (const auto& f : p.frames) (can->send(f) ? sent_ok : send_failed)++;
+        return;
+      }
+#endif
+      (sender->send(p.bytes) ? sent_ok : send_failed)++;
+    };
     std::optional<io::wire::CigiStartOfFrame> last_sof;
     auto poll_sof = [&] {
       if (!sof_socket) return;
@@ -237,10 +320,10 @@ int run_send_command(const std::vector<std::string>& argv) {
         const double t = std::clamp(now - start, 0.0, duration);
         io::Hpr hpr;
         io::Pose pose;
-        auto bytes = make_datagram(i, t, now, hpr, pose);
+        Packet pk = make_packet(i, t, now, hpr, pose);
         if (t >= next_log) log_pose(i, t, now, true, pose, hpr), next_log = t + 0.5 * period;
-        corrupt(bytes);
-        (sender.send(bytes) ? sent_ok : send_failed)++;
+        corrupt(pk);
+        send_packet(pk);
         if (i % 256 == 0) poll_sof();
       }
     }
@@ -249,7 +332,7 @@ int run_send_command(const std::vector<std::string>& argv) {
       queue.pop();
       const double wait = start + p.send_at_s - io::net::steady_now_s();
       if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
-      (sender.send(p.bytes) ? sent_ok : send_failed)++;
+      send_packet(p);
       poll_sof();
     }
     if (sof_socket) {  // the IG answers each frame: collect the last replies
@@ -257,9 +340,10 @@ int run_send_command(const std::vector<std::string>& argv) {
       poll_sof();
     }
     if (!args.quiet) {
-      std::printf("ig send: %d poses as %s to %s: %llu datagrams sent (%llu refused), %llu lost, %llu duplicated, "
+      std::printf("ig send: %d poses as %s to %s: %llu %s sent (%llu refused), %llu lost, %llu duplicated, "
                   "%llu reordered, %llu corrupted\n",
-                  count, io::protocol_name(args.protocol), args.to.c_str(), (unsigned long long)sent_ok,
+                  count, format.c_str(), args.can ? args.can->c_str() : args.to.c_str(), (unsigned long long)sent_ok,
+                  args.can ? "frames" : "datagrams",
                   (unsigned long long)send_failed, (unsigned long long)lost, (unsigned long long)duplicated,
                   (unsigned long long)reordered, (unsigned long long)corrupted);
       if (sof_socket)

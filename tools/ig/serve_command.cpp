@@ -27,6 +27,9 @@
 #include "pose_feed.h"
 #include "run_outputs.h"
 #include "scenario_runner.h"
+#ifdef IG_WITH_CAN
+#include "io/can/can_pose_source.h"
+#endif
 #ifdef IG_WITH_MODBUS
 #include "io/control/modbus_server.h"
 #include "render/twolevel_method.h"
@@ -40,16 +43,23 @@ constexpr const char* kUsage =
     "                [--fgfdm ADDR:PORT] [--multicast GROUP] [--channel NAME] [--headless | --window]\n"
     "                [--out DIR] [--frames N | --seconds S] [--rate HZ] [--record FILE]\n"
     "                [--size WxH] [--method NAME] [--modbus ADDR:PORT] [--quiet]\n"
+    "                [--can IFNAME [--can-altitude 320|322|332] [--can-node N] [--can-max-age-ms MS]]\n"
     "  ADDR may be empty (':5500' = all interfaces); with --multicast GROUP every\n"
     "  source binds GROUP:PORT and joins the group on loopback.\n"
-    "  --modbus ADDR:PORT: Modbus TCP status/control server (docs/modbus.md).\n";
+    "  --modbus ADDR:PORT: Modbus TCP status/control server (docs/modbus.md).\n"
+    "  --can IFNAME: SocketCAN pose source, CANaerospace and the CAN FD pose (docs/can.md);\n"
+    "  altitude from id 322 unless --can-altitude, any node unless --can-node, fields\n"
+    "  older than --can-max-age-ms (100) are stale. A missing or down interface is retried.\n";
 
 std::atomic<bool> g_stop{false};
 extern "C" void on_signal(int) { g_stop = true; }
 
 struct Args {
   std::string config;
-  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus;
+  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus, can;
+  int can_altitude = 322;
+  std::optional<int> can_node;
+  double can_max_age_ms = 100.0;
   std::string out_dir;
   std::optional<int> frames;
   std::optional<double> seconds;
@@ -73,6 +83,18 @@ Args parse_args(const std::vector<std::string>& a) {
     else if (f == "--channel") args.channel = r.value(f);
     else if (f == "--record") args.record = r.value(f);
     else if (f == "--modbus") args.modbus = r.value(f);
+    else if (f == "--can") args.can = r.value(f);
+    else if (f == "--can-altitude") {
+      args.can_altitude = r.positive_int(f);
+      if (args.can_altitude != 320 && args.can_altitude != 322 && args.can_altitude != 332)
+        throw UsageError("--can-altitude: expected 320, 322 or 332, got " + std::to_string(args.can_altitude));
+    } else if (f == "--can-node") {
+      const std::string v = r.value(f);
+      char* end = nullptr;
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end || n < 0 || n > 255) throw UsageError("--can-node: expected 0..255, got '" + v + "'");
+      args.can_node = int(n);
+    } else if (f == "--can-max-age-ms") args.can_max_age_ms = r.positive_double(f);
     else if (f == "--out") args.out_dir = r.value(f);
     else if (f == "--frames") args.frames = r.positive_int(f);
     else if (f == "--seconds") args.seconds = r.positive_double(f);
@@ -91,7 +113,11 @@ Args parse_args(const std::vector<std::string>& a) {
   if (window && headless) throw UsageError("--window and --headless exclude each other");
   if (args.frames && args.seconds) throw UsageError("--frames and --seconds exclude each other");
   if (args.cigi_reply && !args.cigi) throw UsageError("--cigi-reply needs --cigi");
-  if (!args.udp && !args.cigi && !args.fgfdm) throw UsageError("no pose source: give --udp, --cigi or --fgfdm");
+  if (!args.udp && !args.cigi && !args.fgfdm && !args.can)
+    throw UsageError("no pose source: give --udp, --cigi, --fgfdm or --can");
+#ifndef IG_WITH_CAN
+  if (args.can) throw UsageError("--can: this ig was built without SocketCAN (IG_WITH_CAN=OFF)");
+#endif
   args.run.headless = !window;
 #ifdef IG_WITH_MODBUS
   if (args.modbus) {
@@ -278,6 +304,18 @@ int run_serve_command(const std::vector<std::string>& argv) {
     if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, args.quiet);
 #endif
     std::optional<io::Pose> last_pose;  // for freeze
+#ifdef IG_WITH_CAN
+    std::unique_ptr<io::can::CanPoseSource> can;
+    std::uint64_t can_state = 0;
+    if (args.can) {
+      io::can::CanPoseSourceOptions o;
+      o.ifname = *args.can;
+      o.pose.altitude_id = std::uint16_t(args.can_altitude);
+      o.pose.max_age_s = args.can_max_age_ms * 1e-3;
+      if (args.can_node) o.decode.node_id = std::uint8_t(*args.can_node);
+      can = std::make_unique<io::can::CanPoseSource>(o);
+    }
+#endif
 
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
@@ -294,6 +332,24 @@ int run_serve_command(const std::vector<std::string>& argv) {
           if (recorder) recorder->write(src.protocol, d, t);
           feed.intake().handle(src.protocol, d, t);
         });
+#ifdef IG_WITH_CAN
+      if (can) {
+        can->poll([&](const io::wire::PoseMessage& m, double t, io::can::CanFormat fmt) {
+          feed.intake().handle_pose(fmt == io::can::CanFormat::CanFd ? io::Protocol::CanFd : io::Protocol::CanAerospace,
+                                    m, t);
+        });
+        // Say each change of the interface's state once; rendering goes on
+        // with the last good pose (the filter holds / extrapolates it).
+        if (can->socket().state_changes() != can_state) {
+          can_state = can->socket().state_changes();
+          const auto& err = can->socket().last_error();
+          if (!err.empty())
+            std::cerr << "ig serve: CAN " << err << "; retrying every 0.5 s, rendering the last good pose\n";
+          else if (!args.quiet)
+            std::cerr << "ig serve: CAN " << *args.can << ": receiving\n";
+        }
+      }
+#endif
       const double frame_start = io::net::steady_now_s();
       const bool last = (args.frames && k == *args.frames - 1) ||
                         (args.seconds && frame_start - start + period >= *args.seconds) || g_stop;
@@ -337,6 +393,9 @@ int run_serve_command(const std::vector<std::string>& argv) {
     }
     nlohmann::json extra = {{"pose_intake", feed.summary()}, {"rate_hz", args.rate_hz}};
     if (recorder) extra["recording"] = {{"file", *args.record}, {"datagrams", recorder->count()}};
+#ifdef IG_WITH_CAN
+    if (can) extra["can"] = can->summary();
+#endif
 #ifdef IG_WITH_MODBUS
     if (modbus) extra["modbus"] = modbus->summary();
 #endif
