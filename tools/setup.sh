@@ -19,6 +19,9 @@ packages=(
   clang libclang-rt-14-dev
   # Modbus TCP status/control
   libmodbus-dev mbpoll
+  # vcan integration tests: a small VM (the host kernel has no SocketCAN) with
+  # Debian's kernel (fetched by the test harness), busybox, can-utils as a peer
+  qemu-system-x86 busybox-static can-utils iproute2 xz-utils
 )
 
 missing=()
