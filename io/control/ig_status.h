@@ -45,6 +45,12 @@ struct IgStatus {
   std::uint32_t pose_age_ms = 0xFFFFFFFFu;  // newest sample used -> frame start (0xFFFFFFFF: no pose)
   PacketCounts native, cigi, fgfdm;     // cumulative accepted / rejected datagrams per source
   std::uint32_t uptime_s = 0;           // since the server started
+  // CAN pose source (ig serve --can): link 0 = no CAN source, 1 = receiving,
+  // 2 = unusable and retrying (no AF_CAN, missing, down, removed).
+  std::uint16_t can_link = 0;
+  std::uint32_t can_poses = 0;          // poses formed (CANaerospace cycles + FD frames)
+  std::uint32_t can_rejected = 0;       // frames rejected by the decoders
+  std::uint32_t can_error_frames = 0;   // CAN error frames (bus-off included)
   std::uint16_t modbus_clients = 0;     // filled in by the server itself
 };
 

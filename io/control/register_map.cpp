@@ -44,6 +44,10 @@ void encode_status(const IgStatus& s, std::span<std::uint16_t, in::kCount> r) {
   put_u32(&r[in::kFgfdmBad], s.fgfdm.bad);
   put_u32(&r[in::kUptimeS], s.uptime_s);
   r[in::kModbusClients] = s.modbus_clients;
+  r[in::kCanLink] = s.can_link;
+  put_u32(&r[in::kCanPoses], s.can_poses);
+  put_u32(&r[in::kCanRejected], s.can_rejected);
+  put_u32(&r[in::kCanErrorFrames], s.can_error_frames);
 }
 
 void encode_controls(const IgControls& c, std::span<std::uint16_t, hold::kCount> r) {

@@ -40,8 +40,9 @@ namespace in {
 inline constexpr std::uint16_t kState = 0, kFlags = 1, kFrameCounter = 2, kLastFrameUs = 4, kMedianFrameUs = 6,
                                kLevel1Size = 8, kLevel1Ratio = 9, kTriangles = 11, kPoseAgeMs = 13,
                                kNativeOk = 15, kNativeBad = 17, kCigiOk = 19, kCigiBad = 21, kFgfdmOk = 23,
-                               kFgfdmBad = 25, kUptimeS = 27, kModbusClients = 29;
-inline constexpr int kCount = 30;
+                               kFgfdmBad = 25, kUptimeS = 27, kModbusClients = 29, kCanLink = 30,
+                               kCanPoses = 31, kCanRejected = 33, kCanErrorFrames = 35;
+inline constexpr int kCount = 37;
 }  // namespace in
 
 // Holding register addresses (controls, FC 03 / 06 / 16).
@@ -51,7 +52,7 @@ inline constexpr std::uint16_t kFreeze = 0, kWireframe = 1, kA1 = 2, kA2 = 4, kA
 inline constexpr int kCount = 13;
 }  // namespace hold
 
-inline constexpr std::array<RegisterDef, 25> kRegisterMap = {{
+inline constexpr std::array<RegisterDef, 29> kRegisterMap = {{
     {"ig_state", Block::Input, in::kState, RegType::U16, "enum", 0, 4, false, false,
      "0 starting, 1 waiting for a pose, 2 running, 3 frozen, 4 stopping"},
     {"status_flags", Block::Input, in::kFlags, RegType::U16, "bits", 0, 63, false, false,
@@ -86,6 +87,14 @@ inline constexpr std::array<RegisterDef, 25> kRegisterMap = {{
      "seconds since the Modbus server started"},
     {"modbus_clients", Block::Input, in::kModbusClients, RegType::U16, "clients", 0, 65535, false, false,
      "Modbus TCP clients connected now"},
+    {"can_link", Block::Input, in::kCanLink, RegType::U16, "enum", 0, 2, false, false,
+     "CAN source: 0 none, 1 receiving, 2 interface unusable, retrying"},
+    {"can_poses", Block::Input, in::kCanPoses, RegType::U32, "poses", 0, 4294967295.0, false, false,
+     "poses from the CAN source (CANaerospace cycles + FD frames)"},
+    {"can_rejected", Block::Input, in::kCanRejected, RegType::U32, "frames", 0, 4294967295.0, false, false,
+     "CAN frames rejected by the decoders"},
+    {"can_error_frames", Block::Input, in::kCanErrorFrames, RegType::U32, "frames", 0, 4294967295.0, false, false,
+     "CAN error frames received (bus-off included)"},
 
     {"freeze", Block::Holding, hold::kFreeze, RegType::U16, "bool", 0, 1, false, false,
      "1: keep rendering the last pose, pose input ignored"},

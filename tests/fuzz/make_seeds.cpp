@@ -1,5 +1,5 @@
 // Writes a small seed corpus for the fuzz targets: make_seeds OUT_DIR
-// creates OUT_DIR/{native,cigi,fgfdm}/seed_NN from valid encodings.
+// creates OUT_DIR/{native,cigi,fgfdm,can}/seed_NN from valid encodings.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "can_frame_stream.h"
+#include "io/wire/can_fd_pose.h"
+#include "io/wire/canaerospace.h"
 #include "io/wire/cigi.h"
 #include "io/wire/fgnetfdm.h"
 #include "io/wire/native.h"
@@ -56,6 +59,14 @@ int main(int argc, char** argv) {
     write(out / "cigi", i, c.data(), c.size());
     const auto f = ig::io::wire::encode_fgnetfdm(m);
     write(out / "fgfdm", i, f.data(), f.size());
+    // CAN: a CANaerospace cycle (DOUBLE or FLOAT position) then an FD pose.
+    ig::io::wire::CanAerospaceEncodeConfig cc;
+    cc.position_as_double = (i & 1) == 0;
+    ig::io::wire::CanAerospaceEncoder enc(cc);
+    std::vector<std::uint8_t> stream;
+    for (const auto& frame : enc.encode(m)) ig_fuzz::append_frame_bytes(stream, frame);
+    ig_fuzz::append_frame_bytes(stream, ig::io::wire::encode_can_fd_pose(m));
+    write(out / "can", i, stream.data(), stream.size());
   }
   return 0;
 }

@@ -32,12 +32,15 @@ done
 "$bin/ig-send" "$src/scenarios/default.json" --to "127.0.0.1:$udp" --duration 10 --quiet > "$out/send.log" 2>&1 &
 send=$!
 
-# 1. The frame counter increases while frames are rendered.
-f1=$(read_u32 2); sleep 0.5; f2=$(read_u32 2)
+# 1. The frame counter increases while frames are rendered. The server is up
+# before the first frame (terrain build, first Level1 at full size can take a
+# second on a loaded machine): wait for frame 1 first.
+for _ in $(seq 1 100); do f1=$(read_u32 2); [ -n "$f1" ] && [ "$f1" -gt 0 ] && break; sleep 0.1; done
+sleep 0.5; f2=$(read_u32 2)
 echo "mbpoll frame counter: $f1 then $f2"
 [ -n "$f1" ] && [ -n "$f2" ] && [ "$f2" -gt "$f1" ] || fail "frame counter did not increase ($f1 -> $f2)"
 sleep 0.5
-echo "mbpoll status block:"; mb -t 3 -r 0 -c 30 -1 2>&1 | grep '^\[' | tr '\n' ' '; echo
+echo "mbpoll status block:"; mb -t 3 -r 0 -c 37 -1 2>&1 | grep '^\[' | tr '\n' ' '; echo
 for _ in $(seq 1 50); do ok=$(read_u32 15); [ -n "$ok" ] && [ "$ok" -gt 0 ] && break; sleep 0.1; done
 echo "mbpoll native packets accepted: $ok"
 [ -n "$ok" ] && [ "$ok" -gt 0 ] || fail "native_ok not counting ($ok)"
@@ -62,7 +65,7 @@ bad "Illegal data value" mbw -t 4:float -B -r 2 -- 0.2 0.1
 bad "Illegal data value" mbw -t 4 -r 0 -- 2
 bad "Illegal data value" mbw -t 4:float -B -r 10 -- -5
 bad "Illegal data address" mbw -t 4 -r 13 -- 1
-bad "Illegal data address" mb -t 3 -r 29 -c 2 -1
+bad "Illegal data address" mb -t 3 -r 36 -c 2 -1
 a1=$(read_hold_f32 2); a2=$(read_hold_f32 4)
 echo "after bad writes a1=$a1 a2=$a2"
 python3 -c "import sys; sys.exit(0 if abs($a1-0.05)<1e-6 and abs($a2-0.10)<1e-6 else 1)" || fail "a bad write changed the thresholds"

@@ -144,6 +144,10 @@ TEST(ModbusServer, ReadsThePublishedStatus) {
   s.native = {100000, 7};
   s.cigi = {5, 6};
   s.fgfdm = {8, 9};
+  s.can_link = 2;
+  s.can_poses = 70000;
+  s.can_rejected = 11;
+  s.can_error_frames = 3;
   server->publish(s);
   Client c(server->port());
   const auto r = c.input(0, in::kCount);
@@ -164,6 +168,10 @@ TEST(ModbusServer, ReadsThePublishedStatus) {
   EXPECT_EQ(get_u32(&r[in::kFgfdmBad]), 9u);
   EXPECT_LT(get_u32(&r[in::kUptimeS]), 5u);
   EXPECT_EQ(r[in::kModbusClients], 1);
+  EXPECT_EQ(r[in::kCanLink], 2);
+  EXPECT_EQ(get_u32(&r[in::kCanPoses]), 70000u);
+  EXPECT_EQ(get_u32(&r[in::kCanRejected]), 11u);
+  EXPECT_EQ(get_u32(&r[in::kCanErrorFrames]), 3u);
   // A partial read of one block member.
   const auto fc = c.input(in::kFrameCounter, 2);
   EXPECT_EQ(get_u32(fc.data()), 0x12345u);

@@ -195,7 +195,7 @@ class ModbusLink {
   bool frozen() const { return frozen_; }
 
   void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, double pose_age_ms,
-               bool last) {
+               bool last, const io::control::IgStatus& can_part) {
     namespace ctl = io::control;
     const double frame_us = (frame_end_s - frame_start_s) * 1e6;
     window_.push_back({frame_end_s, frame_us});
@@ -229,6 +229,10 @@ class ModbusLink {
     s.native = counts(io::Protocol::Native);
     s.cigi = counts(io::Protocol::Cigi);
     s.fgfdm = counts(io::Protocol::FgNetFdm);
+    s.can_link = can_part.can_link;
+    s.can_poses = can_part.can_poses;
+    s.can_rejected = can_part.can_rejected;
+    s.can_error_frames = can_part.can_error_frames;
     if (frozen_) flags |= ctl::kFlagFrozen;
     if (wireframe_) flags |= ctl::kFlagWireframe;
     if (received) flags |= ctl::kFlagPoseReceived;
@@ -380,7 +384,20 @@ int run_serve_command(const std::vector<std::string>& argv) {
           if (c.name == "pose_age_ms") pose_age_ms = std::atof(c.text.c_str());
       });
 #ifdef IG_WITH_MODBUS
-      if (modbus) modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, pose_age_ms, last);
+      if (modbus) {
+        io::control::IgStatus can_part;
+#ifdef IG_WITH_CAN
+        if (can) {
+          const auto& cs = can->socket().stats();
+          can_part.can_link = can->socket().is_open() ? 1 : 2;
+          can_part.can_poses = std::uint32_t(can->poses());
+          can_part.can_rejected = std::uint32_t(can->canaerospace_stats().rejected() + can->fd_stats().frames -
+                                                can->fd_stats().accepted);
+          can_part.can_error_frames = std::uint32_t(cs.error_frames);
+        }
+#endif
+        modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, pose_age_ms, last, can_part);
+      }
 #endif
       (void)pose_age_ms;
       if (last || (!runner.context().headless() && runner.window_closed())) break;
