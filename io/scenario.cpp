@@ -285,7 +285,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
 
 TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
   require_object(j, path);
-  check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride"});
+  check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride", "eye_guard"});
   TwoLevelSpec t;
   if (j.contains("level0_budget"))
     t.level0_budget = static_cast<int>(get_integer(j["level0_budget"], child(path, "level0_budget"), 2, 10000000));
@@ -301,6 +301,7 @@ TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
     t.max_level1 = static_cast<int>(n);
   }
   if (j.contains("band_stride")) t.band_stride = static_cast<int>(get_integer(j["band_stride"], child(path, "band_stride"), 1, 64));
+  if (j.contains("eye_guard")) t.eye_guard = get_bool(j["eye_guard"], child(path, "eye_guard"));
   return t;
 }
 
@@ -309,7 +310,7 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   require_object(j, path);
   check_keys(j, path,
              {"width", "height", "fov_y_deg", "near_m", "far_m", "method", "fog_visibility_m", "sky_zenith_rgb",
-              "sky_horizon_rgb", "sun_direction", "imagery", "frame_budget_ms", "vsync", "twolevel"});
+              "sky_horizon_rgb", "sun_direction", "imagery", "frame_budget_ms", "vsync", "earth_curvature", "twolevel"});
   RenderSpec r;
   if (j.contains("width")) r.width = static_cast<int>(get_integer(j["width"], child(path, "width"), 1, kMaxImageSide));
   if (j.contains("height")) r.height = static_cast<int>(get_integer(j["height"], child(path, "height"), 1, kMaxImageSide));
@@ -342,6 +343,8 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   if (j.contains("imagery")) r.imagery = get_file_path(j["imagery"], child(path, "imagery"), ctx);
   if (j.contains("frame_budget_ms")) r.frame_budget_ms = get_positive(j["frame_budget_ms"], child(path, "frame_budget_ms"), 1e6);
   if (j.contains("vsync")) r.vsync = get_bool(j["vsync"], child(path, "vsync"));
+  if (j.contains("earth_curvature"))
+    r.earth_curvature = get_choice(j["earth_curvature"], child(path, "earth_curvature"), {"auto", "on", "off"});
   if (j.contains("twolevel")) r.twolevel = parse_twolevel(j["twolevel"], child(path, "twolevel"));
   return r;
 }

@@ -49,6 +49,7 @@ struct TwoLevelSpec {
   std::string beta = "linear";  // band weight template: linear | gaussian
   int max_level1 = 1025;      // top of the Level1 ladder (33, 65, ..., 1025)
   int band_stride = 2;        // band geometry every k samples
+  bool eye_guard = true;      // Level1 also covers the ground under a low eye
 };
 
 struct RenderSpec {
@@ -65,6 +66,9 @@ struct RenderSpec {
   std::optional<std::string> imagery;  // optional RGB image draped over the DEM
   double frame_budget_ms = 16.667;     // frames slower than this are counted
   bool vsync = true;                   // windowed only
+  // Earth curvature drop (docs/scenario.md): "auto" = on for georeferenced
+  // terrain spanning more than 5 km (app::earth_radius_for), "on", "off".
+  std::string earth_curvature = "auto";
   TwoLevelSpec twolevel;
 };
 

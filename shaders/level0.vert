@@ -10,6 +10,7 @@ uniform vec2 u_spacing;
 uniform ivec2 u_eye_sample;  // floor(eye / spacing)
 uniform vec3 u_eye_frac;     // eye - eye_sample * spacing (xy), eye height (z)
 uniform mat4 u_view_proj;
+uniform float u_earth_radius_m;  // > 0: Earth curvature on (terrain/earth_curvature.h), 0: flat
 
 out vec3 v_rel;
 out vec2 v_sample;
@@ -17,6 +18,11 @@ out vec2 v_sample;
 void main() {
   float h = texelFetch(u_height, a_sample, 0).r;
   vec3 rel = vec3(vec2(a_sample - u_eye_sample) * u_spacing - u_eye_frac.xy, h - u_eye_frac.z);
+  // Curvature: the same drop as terrain_grid.vert.
+  if (u_earth_radius_m > 0.0) {
+    float r = u_earth_radius_m, d2 = min(dot(rel.xy, rel.xy), r * r);
+    rel.z -= d2 / (r + sqrt(r * r - d2));
+  }
   v_rel = rel;
   v_sample = vec2(a_sample);
   gl_Position = u_view_proj * vec4(rel, 1.0);

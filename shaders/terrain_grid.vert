@@ -13,6 +13,7 @@ uniform vec2 u_spacing;       // metres per sample (x east, y north)
 uniform ivec2 u_origin;       // grid origin in samples (may lie outside the DEM)
 uniform vec3 u_origin_rel;    // u_origin's position minus the eye (z: -eye height)
 uniform mat4 u_view_proj;     // eye-relative world -> clip
+uniform float u_earth_radius_m;  // > 0: Earth curvature on (terrain/earth_curvature.h), 0: flat
 
 out vec3 v_rel;     // eye-relative world position
 out vec2 v_sample;  // DEM sample coordinates
@@ -23,6 +24,12 @@ void main() {
   ivec2 local = s - u_origin;
   float h = a_wall.x > 0.5 ? a_wall.y : texelFetch(u_height, s, 0).r;
   vec3 rel = u_origin_rel + vec3(vec2(local) * u_spacing, h);
+  // Curvature: drop below the eye's tangent plane, d^2 / (R + sqrt(R^2 - d^2))
+  // (no cancellation in float; the same formula as terrain::curvature_drop).
+  if (u_earth_radius_m > 0.0) {
+    float r = u_earth_radius_m, d2 = min(dot(rel.xy, rel.xy), r * r);
+    rel.z -= d2 / (r + sqrt(r * r - d2));
+  }
   v_rel = rel;
   v_sample = vec2(s);
   gl_Position = u_view_proj * vec4(rel, 1.0);

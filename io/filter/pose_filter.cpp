@@ -43,6 +43,7 @@ PoseFilter::PoseFilter(const PoseFilterOptions& options) : opt_(options) {
   opt_.clock_snap_s = std::max(0.0, fin(opt_.clock_snap_s, 0.25));
   opt_.max_extrapolation_s = std::max(0.0, fin(opt_.max_extrapolation_s, 0.2));
   if (!(opt_.time_jump_s > 0.0)) opt_.time_jump_s = 1.0;
+  if (!(opt_.clock_step_s > 0.0) || !std::isfinite(opt_.clock_step_s)) opt_.clock_step_s = 0.25;
   opt_.reorder_window = std::max<std::uint32_t>(1, std::min<std::uint32_t>(opt_.reorder_window, 0x7fffffffu));
   interval_ = opt_.nominal_interval_s;
   reset();
@@ -54,6 +55,7 @@ void PoseFilter::reset() {
   offset_ = jitter_ = 0.0;
   seen_next_ = seen_count_ = 0;
   clock_init_ = false;
+  above_ = false;
   have_output_ = false;
   last_tau_ = -std::numeric_limits<double>::infinity();
 }
@@ -215,6 +217,32 @@ bool PoseFilter::push(const PoseSample& s) {
       return true;
     }
   }
+  // A newer packet (by sequence number) stamped earlier than the newest: the
+  // sender's clock stepped back by less than time_jump_s. Appending it would
+  // unsort the buffer; start a fresh stream as for any clock jump.
+  if (!stale && !seq_restart && e.t < newest.t) {
+    ++counters_.time_jumps;
+    restart(e);
+    return true;
+  }
+  // Smaller steps of either clock: an offset change that delay cannot
+  // explain (see PoseFilterOptions::clock_step_s).
+  if (!stale) {
+    const double off = e.recv - e.t;
+    bool step = off < offset_ - opt_.clock_step_s;
+    if (off > offset_ + opt_.clock_step_s) {
+      if (!above_) above_since_ = e.t;
+      above_ = true;
+      step = step || e.t - above_since_ >= opt_.clock_step_s;
+    } else {
+      above_ = false;
+    }
+    if (step) {
+      ++counters_.time_jumps;
+      restart(e);
+      return true;
+    }
+  }
   if (seq_restart) {
     if (e.t <= newest.t) {  // numbering restarted but time did not advance: stale
       stale = true;
@@ -322,7 +350,10 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s) {
     if (std::fabs(target - budget_) > opt_.clock_snap_s) budget_ = target;
   }
   last_now_ = now_s;
-  const double tau = now_s - budget_;
+  // The rendered timeline never runs backwards: when the playout point would
+  // move back (the IG clock stepped back, or the offset estimate rose by more
+  // than clock_snap_s), hold the last instant until it catches up.
+  const double tau = std::max(now_s - budget_, last_tau_);
 
   FilteredPose out;
   const Entry& oldest = at(0);

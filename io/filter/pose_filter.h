@@ -109,6 +109,12 @@ struct PoseFilterOptions {
   // A sender time off by more than this from the expected progression
   // (last sender time + receive time elapsed since) resets the filter.
   double time_jump_s = 1.0;
+  // Smaller clock steps (either clock, either way) show as a change of the
+  // receive-minus-sender offset that network delay cannot explain: a packet
+  // more than this below the window's minimum (delay never drops below its
+  // floor), or every packet more than this above it for this long (sender
+  // time). Either resets the filter too.
+  double clock_step_s = 0.25;
   // Sequence numbers less than this far behind the newest are stale packets;
   // further behind, the sender restarted its counter.
   std::uint32_t reorder_window = 1000;
@@ -190,6 +196,8 @@ class PoseFilter {
   bool interval_known_ = false;
 
   bool clock_init_ = false;
+  bool above_ = false;       // packets have run above offset + clock_step_s ...
+  double above_since_ = 0.0;  // ... since this sender time
   double budget_ = 0.0;  // offset + delay in effect (slewed)
   double last_now_ = 0.0;
   double last_tau_ = 0.0;  // stream time of the last output

@@ -494,6 +494,40 @@ TEST(PoseFilter, HostTimeJumpsBackAndForward) {
   EXPECT_LT(max_transient, 150.0 * 0.15);
 }
 
+TEST(PoseFilter, SmallClockStepsResetInsteadOfMixingTimelines) {
+  // Steps below time_jump_s (1 s): the sender clock back 0.5 s (a newer
+  // sequence number stamped earlier; appending it would unsort the buffer)
+  // and forward 0.5 s (the offset drops below its floor). Each resets.
+  const Truth tr = manoeuvre();
+  StreamSpec sp;
+  sp.duration_s = 6.0;
+  sp.clock_steps = {{2.0, -0.5}, {4.0, 0.0}};
+  PoseFilter f;
+  const auto pk = make_stream(tr, sp, 12);
+  auto near_step = [](double now) { return (now >= 2.0 && now < 2.3) || (now >= 4.0 && now < 4.3); };
+  auto to_true = [](double s, double now) {
+    double best = s;
+    for (double c : {0.0, -0.5})
+      if (std::fabs(s - c - (now - 0.06)) < std::fabs(best - (now - 0.06))) best = s - c;
+    return best;
+  };
+  double worst_step = 0.0;
+  glm::dvec3 prev{0.0};
+  bool have = false;
+  const auto st = run(f, tr, pk, sp.duration_s, 0.5, to_true, near_step, [&](double, const FilteredPose& p) {
+    if (have) worst_step = std::max(worst_step, glm::length(p.position - prev));
+    prev = p.position;
+    have = true;
+  });
+  report("clock steps -0.5 s, +0.5 s", st, f);
+  std::printf("[filter] clock steps -0.5/+0.5 s: largest frame-to-frame step %.2f m (2.5 m of motion per frame)\n",
+              worst_step);
+  EXPECT_EQ(st.nan, 0);
+  EXPECT_EQ(f.counters().time_jumps, 2u);
+  EXPECT_LT(st.max_pos, 1e-3);
+  EXPECT_LT(worst_step, 150.0 * 0.1);  // at most a playout delay's worth at a reset, never a replay
+}
+
 TEST(PoseFilter, Dropout200msAnd500ms) {
   const Truth tr = manoeuvre();
   for (double len : {0.2, 0.5}) {

@@ -1,9 +1,11 @@
 #include "scene_setup.h"
 
+#include <algorithm>
 #include <string>
 
 #include "io/filter/geodesy.h"
 #include "terrain/dem_loader.h"
+#include "terrain/earth_curvature.h"
 #include "terrain/georef.h"
 #include "terrain/synthetic_terrain.h"
 
@@ -52,6 +54,13 @@ io::PathSpec place_path(const io::PathSpec& path, const terrain::Heightfield& hf
     if (path.altitude == io::AltitudeMode::AboveGround) p[2] += hf.sample_surface(p[0], p[1]);
   }
   return out;
+}
+
+double earth_radius_for(const io::RenderSpec& render, const io::TerrainSpec& spec, const terrain::Heightfield& hf) {
+  if (render.earth_curvature == "on") return terrain::kEarthRadiusM;
+  if (render.earth_curvature == "off") return 0.0;
+  const double span = std::max(hf.extent_x_m(), hf.extent_y_m());
+  return spec.file && hf.georef && span > kAutoCurvatureSpanM ? terrain::kEarthRadiusM : 0.0;
 }
 
 io::GeodeticToLocal geodetic_placer(const terrain::Heightfield& hf) {

@@ -22,6 +22,15 @@ terrain::Heightfield load_terrain(const io::TerrainSpec& spec);
 // the surface under each key. Throws io::ScenarioError naming the key.
 io::PathSpec place_path(const io::PathSpec& path, const terrain::Heightfield& hf);
 
+// The Earth radius the scene is drawn with (0 = flat) for render.earth_curvature:
+// "on" -> terrain::kEarthRadiusM, "off" -> 0, "auto" -> on for a DEM file that
+// is georeferenced and whose larger side exceeds kAutoCurvatureSpanM (the drop
+// is 0.5 m at 2.5 km from the eye, 2 m at 5 km: below that it is lost in the
+// DEM's own error). Generated terrain stays flat under "auto": it is a
+// synthetic world (its origin only places geodetic poses on it).
+constexpr double kAutoCurvatureSpanM = 5000.0;
+double earth_radius_for(const io::RenderSpec& render, const io::TerrainSpec& terrain, const terrain::Heightfield& hf);
+
 // Geodetic -> terrain-local placement for pose packets: the allocation-free
 // WGS84 grid path for geographic DEMs, GDAL/OGR for projected ones, and
 // nullopt for every packet when the terrain has no georeference.

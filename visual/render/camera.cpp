@@ -1,6 +1,9 @@
 #include "render/camera.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "terrain/earth_curvature.h"
 
 namespace ig::render {
 
@@ -55,10 +58,20 @@ Frustum frustum_of(const Camera& camera) {
   f.planes[4] = row(3) - row(2);  // near (reversed: depth <= 1)
   f.planes[5] = row(2);           // far (depth >= 0)
   for (auto& p : f.planes) p /= glm::length(glm::dvec3(p));
+  f.earth_radius_m = camera.earth_radius_m;
   return f;
 }
 
-bool Frustum::intersects_box(const glm::dvec3& lo, const glm::dvec3& hi) const {
+bool Frustum::intersects_box(const glm::dvec3& box_lo, const glm::dvec3& box_hi) const {
+  glm::dvec3 lo = box_lo, hi = box_hi;
+  if (earth_radius_m > 0.0) {
+    // Drawn heights are z - drop(d): the box's nearest horizontal point drops
+    // least, its farthest corner most.
+    const double nx = std::max(lo.x, std::min(0.0, hi.x)), ny = std::max(lo.y, std::min(0.0, hi.y));
+    const double fx = std::max(std::abs(lo.x), std::abs(hi.x)), fy = std::max(std::abs(lo.y), std::abs(hi.y));
+    hi.z -= terrain::curvature_drop(std::hypot(nx, ny), earth_radius_m);
+    lo.z -= terrain::curvature_drop(std::hypot(fx, fy), earth_radius_m);
+  }
   for (const auto& p : planes) {
     const glm::dvec3 v(p.x >= 0 ? hi.x : lo.x, p.y >= 0 ? hi.y : lo.y, p.z >= 0 ? hi.z : lo.z);
     if (p.x * v.x + p.y * v.y + p.z * v.z + p.w < 0) return false;

@@ -7,6 +7,11 @@
 // position (computed in double here), so precision does not depend on how far
 // the scene is from the origin. Depth is reversed-Z (near -> 1, far -> 0) into
 // a 32-bit float buffer (glClipControl ZERO_TO_ONE).
+//
+// Methods see a terrain-local camera (TerrainScene::local_camera): position
+// relative to the DEM's sample (0, 0), and earth_radius_m > 0 when the scene
+// is drawn with Earth curvature (terrain/earth_curvature.h), so culling and
+// the shaders' drop agree without each method knowing about it.
 
 #include <array>
 
@@ -24,6 +29,9 @@ struct Camera {
   double aspect = 4.0 / 3.0;
   double near_m = 0.5;
   double far_m = 300000.0;
+  // > 0: terrain is drawn lowered by the sphere's drop below the eye's
+  // tangent plane (terrain/earth_curvature.h); 0: flat world.
+  double earth_radius_m = 0.0;
 
   glm::dvec3 forward() const;  // world direction of the view's centre ray
   glm::dvec3 right() const;
@@ -44,7 +52,10 @@ struct Camera {
 // Frustum planes in eye-relative world coordinates (a*x + b*y + c*z + d >= 0 inside).
 struct Frustum {
   std::array<glm::dvec4, 6> planes;
+  double earth_radius_m = 0.0;  // the camera's: boxes are lowered by the curvature drop
   // Conservative: false only when the box is entirely outside one plane.
+  // Boxes are flat-terrain boxes (DEM heights); with curvature the box is
+  // first lowered by the drop over its horizontal extent, as the shaders draw it.
   bool intersects_box(const glm::dvec3& lo, const glm::dvec3& hi) const;
 };
 Frustum frustum_of(const Camera& camera);

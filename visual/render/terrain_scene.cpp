@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "gl/gl_context.h"
@@ -13,6 +14,9 @@ namespace ig::render {
 TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& shading,
                            const std::optional<std::string>& imagery_path)
     : heightfield_(hf), shading_(shading) {
+  if (hf.width < 2 || hf.height < 2 || hf.heights.size() != size_t(hf.width) * size_t(hf.height))
+    throw std::invalid_argument(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
+                                " samples: a terrain needs at least 2 x 2 samples to form a surface");
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
   if (hf.width > max_size || hf.height > max_size)
@@ -60,6 +64,13 @@ TerrainScene::~TerrainScene() {
   if (imagery_tex_) glDeleteTextures(1, &imagery_tex_);
 }
 
+Camera TerrainScene::local_camera(const Camera& world) const {
+  Camera c = world;
+  c.position = world.position - world_origin_;
+  c.earth_radius_m = earth_radius_m_;
+  return c;
+}
+
 void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera) const {
   glBindTextureUnit(0, height_tex_);
   p.set("u_height", 0);
@@ -77,6 +88,7 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
   const double k = shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;
   p.set("u_fog_k", float(k));
   p.set("u_view_proj", camera.view_projection());
+  p.set("u_earth_radius_m", float(camera.earth_radius_m));
   p.set("u_alpha", 1.0f);
 }
 

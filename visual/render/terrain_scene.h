@@ -7,9 +7,18 @@
 // float32 DEM keeps its own precision (24-bit mantissa: < 0.5 mm at 8848 m);
 // R16 with scale/offset would quantise float DEMs (e.g. 0.07 m steps over a
 // 4400 m range) for half the memory (4097^2: 64 MiB vs 32 MiB).
+//
+// Where the terrain sits: world_origin is the world position (double) of
+// sample (0, 0) at height 0; methods work in terrain-local metres, and the
+// FrameRenderer hands them local_camera(world camera), so an eye 1e7 m from
+// the world origin is as precise as one at the origin. Earth curvature
+// (terrain/earth_curvature.h) is a property of the scene too; it travels to
+// the methods in Camera::earth_radius_m (culling) and to every terrain vertex
+// shader through bind_common (u_earth_radius_m).
 
 #include <epoxy/gl.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -30,7 +39,9 @@ struct ShadingParams {
 
 class TerrainScene {
  public:
-  // Uploads the height texture (and imagery, only when given).
+  // Uploads the height texture (and imagery, only when given). Throws
+  // std::invalid_argument for a heightfield with fewer than 2 x 2 samples
+  // (no surface to draw).
   TerrainScene(const terrain::Heightfield& heightfield, const ShadingParams& shading,
                const std::optional<std::string>& imagery_path = std::nullopt);
   ~TerrainScene();
@@ -45,8 +56,20 @@ class TerrainScene {
   bool has_imagery() const { return imagery_tex_ != 0; }
   double upload_ms() const { return upload_ms_; }
 
+  // World position of sample (0, 0) at height 0 (default: the origin).
+  const glm::dvec3& world_origin() const { return world_origin_; }
+  void set_world_origin(const glm::dvec3& origin) { world_origin_ = origin; }
+  // Sphere radius for the curvature drop; 0 = flat (default). Non-finite or
+  // negative values mean flat.
+  double earth_radius_m() const { return earth_radius_m_; }
+  void set_earth_radius(double metres) { earth_radius_m_ = metres > 0.0 && std::isfinite(metres) ? metres : 0.0; }
+  // The camera methods see: position relative to sample (0, 0) (computed in
+  // double), earth_radius_m set from the scene.
+  Camera local_camera(const Camera& world) const;
+
   // Binds the textures and sets the uniforms every terrain program shares
-  // (see shaders/terrain.frag and terrain_grid.vert).
+  // (see shaders/terrain.frag and terrain_grid.vert), u_earth_radius_m from
+  // the (local) camera.
   void bind_common(const gl::ShaderProgram& program, const Camera& camera) const;
 
  private:
@@ -55,6 +78,8 @@ class TerrainScene {
   GLuint height_tex_ = 0;
   GLuint imagery_tex_ = 0;
   double upload_ms_ = 0.0;
+  glm::dvec3 world_origin_{0.0};
+  double earth_radius_m_ = 0.0;
 };
 
 }  // namespace ig::render
