@@ -15,8 +15,12 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
   glCreateVertexArrays(1, &empty_vao_);
 }
 
-ViewResult FrameRenderer::render(const Camera& camera, const gl::RenderTarget& target) {
+ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTarget& target) {
+  // Methods work in terrain-local metres (world origin subtracted in double)
+  // and see the scene's Earth curvature through the camera.
+  const Camera camera = scene_.local_camera(world_camera);
   ViewResult r;
+  method_.set_viewport(target.width(), target.height());
   auto t0 = Clock::now();
   method_.update(camera);
   r.timings.lod_ms = ms_since(t0);

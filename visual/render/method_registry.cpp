@@ -2,7 +2,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "render/cdlod_method.h"
+#include "render/chunked_method.h"
+#include "render/geomipmap_method.h"
+#include "render/quadtree_method.h"
 #include "render/reference_method.h"
+#include "render/roam_method.h"
 #include "render/terrain_method.h"
 #include "render/twolevel_method.h"
 
@@ -12,7 +17,9 @@ double pixels_per_radian(const Camera& camera, int viewport_height_px) {
   return 0.5 * viewport_height_px / std::tan(0.5 * camera.fov_y_deg * M_PI / 180.0);
 }
 
-std::vector<std::string> method_names() { return {"twolevel", "reference"}; }
+std::vector<std::string> method_names() {
+  return {"twolevel", "reference", "roam", "geomipmap", "chunked", "quadtree", "cdlod"};
+}
 
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
                                            const std::string& shader_dir, const TwoLevelOptions& twolevel,
@@ -23,13 +30,33 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, const Terrai
     if (knob) o.level0_budget = int(*knob);
     return std::make_unique<TwoLevelMethod>(scene, shader_dir, o);
   }
+  if (name == "roam") {
+    RoamOptions o;
+    if (knob) o.tau_px = *knob;
+    return std::make_unique<RoamMethod>(scene, shader_dir, o);
+  }
+  if (name == "quadtree") {
+    QuadtreeOptions o;
+    if (knob) o.c1 = *knob;
+    return std::make_unique<QuadtreeMethod>(scene, shader_dir, o);
+  }
+  if (name == "geomipmap") return std::make_unique<GeoMipMapMethod>(scene, shader_dir, knob.value_or(2.0));
+  if (name == "chunked") return std::make_unique<ChunkedMethod>(scene, shader_dir, knob.value_or(2.0));
+  if (name == "cdlod")
+    return std::make_unique<CdlodMethod>(scene, shader_dir, knob.value_or(CdlodMethod::kDefaultLod0Range));
   std::string choices;
   for (const auto& n : method_names()) choices += (choices.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown method '" + name + "' (available: " + choices + ")");
 }
 
 std::vector<double> knob_sweep(const std::string& name) {
-  if (name == "twolevel") return {512, 1024, 2048, 4096, 8192};
+  if (name == "twolevel") return {2048, 8192, 32768, 131072};
+  // The coarse ends reach the two-level default's horizon error on the
+  // Table 2 flight, so matched-error times are interpolated, not bounded.
+  if (name == "geomipmap" || name == "chunked") return {64, 32, 16, 8, 4, 2, 1};  // tau_px
+  if (name == "roam") return {64, 32, 16, 8, 4, 2, 1, 0.5};                       // tau_px
+  if (name == "quadtree") return {0.125, 0.25, 0.5, 1, 2, 4, 8};                  // C1 (C2 fixed at 30)
+  if (name == "cdlod") return {8, 16, 32, 64, 128, 256, 512};                     // lod0_range, samples
   return {};
 }
 

@@ -37,6 +37,12 @@ class TerrainMethod {
   virtual std::string name() const = 0;
   // Names of the method-specific columns (fixed for the run).
   virtual std::vector<std::string> column_names() const = 0;
+  // The viewport the next update() selects for; FrameRenderer calls it before
+  // every update(). Methods with a screen-space tolerance need its height.
+  virtual void set_viewport(int width_px, int height_px) {
+    (void)width_px;
+    (void)height_px;
+  }
   // CPU-side LOD selection for this camera.
   virtual void update(const Camera& camera) = 0;
   // Draw into the target, which the caller has bound and cleared with

@@ -1,0 +1,72 @@
+// Image tests of the quadtree baseline (render/quadtree_method) against the
+// reference renderer, headless (EGL on llvmpipe), 320 x 240 frames of a
+// 513 x 513 synthetic terrain: no holes at several views, restricted levels
+// and a crack-free mesh at the same eyes, the C1 sweep monotonic in
+// triangles and error bound. Measured figures are printed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "gl/lod_view_checks.h"
+#include "lod/quadtree_tessellator.h"
+#include "render/quadtree_method.h"
+#include "unit/lod_mesh_checks.h"
+
+namespace {
+
+using ig::render::QuadtreeMethod;
+using lod_views::World;
+
+// One context and terrain for the whole binary (one context per process).
+World& world() {
+  static World w(513, 4);
+  return w;
+}
+
+// Leaves sharing an edge differ by at most one level (cells inside the DEM).
+bool levels_restricted(const ig::lod::QuadtreeTessellator& q, const ig::terrain::Heightfield& hf) {
+  for (int cy = 0; cy < hf.height - 1; ++cy)
+    for (int cx = 0; cx < hf.width - 1; ++cx) {
+      const int l = q.leaf_level(cx, cy);
+      if (cx + 1 < hf.width - 1 && std::abs(l - q.leaf_level(cx + 1, cy)) > 1) return false;
+      if (cy + 1 < hf.height - 1 && std::abs(l - q.leaf_level(cx, cy + 1)) > 1) return false;
+    }
+  return true;
+}
+
+TEST(Quadtree, NoHolesAgainstTheReferenceAtManyViews) {
+  auto& w = world();
+  ig::render::ReferenceMethod reference(*w.scene, w.shader_dir);
+  QuadtreeMethod quadtree(*w.scene, w.shader_dir);
+  for (const auto& v : lod_views::per_frame_views(w.hf)) {
+    ASSERT_NO_FATAL_FAILURE(lod_views::expect_no_holes_within_bound(w, reference, quadtree, v, 2));
+
+    // This frame's quadtree (culled as drawn) keeps adjacent levels within
+    // one; the same eye without culling gives a crack-free whole mesh.
+    EXPECT_TRUE(levels_restricted(quadtree.tessellator(), w.hf)) << v.name;
+    ig::lod::QuadtreeTessellator whole(w.hf);
+    whole.update(v.camera.position, ig::render::QuadtreeOptions{}.c1, ig::render::QuadtreeOptions{}.c2);
+    EXPECT_EQ(lod_checks::watertight(whole.vertices(), w.hf.width, w.hf.height), "") << v.name;
+  }
+}
+
+TEST(Quadtree, C1SweepGivesMoreTrianglesAndASmallerBound) {
+  lod_views::expect_sweep_refines_down_to_the_floor(world(), "quadtree", "C1", 1e4);
+}
+
+TEST(Quadtree, RegisteredWithItsKnob) {
+  auto& w = world();
+  const auto names = ig::render::method_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), "quadtree"), names.end());
+  auto m = ig::render::make_method("quadtree", *w.scene, w.shader_dir, {});
+  EXPECT_EQ(m->name(), "quadtree");
+  EXPECT_EQ(m->knob()->name, "C1");
+  EXPECT_EQ(m->knob()->value, ig::render::QuadtreeOptions{}.c1);
+  EXPECT_EQ(m->column_names().size(), 5u);
+  EXPECT_THROW(ig::render::make_method("quadtree", *w.scene, w.shader_dir, {}, 0.0), std::invalid_argument);
+  EXPECT_THROW(ig::render::make_method("quadtree", *w.scene, w.shader_dir, {}, std::nan("")), std::invalid_argument);
+}
+
+}  // namespace

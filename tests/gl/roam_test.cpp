@@ -1,0 +1,60 @@
+// Image tests of the ROAM baseline (render/roam_method) against the
+// reference renderer, headless (EGL on llvmpipe), 320 x 240 frames of a
+// 513 x 513 synthetic terrain: no holes at several views, a crack-free mesh
+// at the same eyes, the knob sweep monotonic in triangles and error bound.
+// Measured figures are printed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "gl/lod_view_checks.h"
+#include "lod/roam_tessellator.h"
+#include "render/roam_method.h"
+#include "unit/lod_mesh_checks.h"
+
+namespace {
+
+using ig::render::RoamMethod;
+using lod_views::kH;
+using lod_views::World;
+
+// One context and terrain for the whole binary (one context per process).
+World& world() {
+  static World w(513, 4);
+  return w;
+}
+
+TEST(Roam, NoHolesAgainstTheReferenceAtManyViews) {
+  auto& w = world();
+  ig::render::ReferenceMethod reference(*w.scene, w.shader_dir);
+  RoamMethod roam(*w.scene, w.shader_dir);
+  for (const auto& v : lod_views::per_frame_views(w.hf)) {
+    ASSERT_NO_FATAL_FAILURE(lod_views::expect_no_holes_within_bound(w, reference, roam, v, 1));
+
+    // The same eye without culling: the whole mesh is crack-free.
+    ig::lod::RoamTessellator whole(w.hf);
+    whole.update(v.camera.position, 2.0, ig::render::pixels_per_radian(v.camera, kH));
+    EXPECT_EQ(lod_checks::watertight(whole.vertices(), w.hf.width, w.hf.height), "") << v.name;
+  }
+}
+
+TEST(Roam, KnobSweepGivesMoreTrianglesAndASmallerBound) {
+  lod_views::expect_sweep_refines_down_to_the_floor(world(), "roam", "tau", 0.0);
+}
+
+TEST(Roam, RegisteredWithItsKnob) {
+  auto& w = world();
+  const auto names = ig::render::method_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), "roam"), names.end());
+  auto m = ig::render::make_method("roam", *w.scene, w.shader_dir, {});
+  EXPECT_EQ(m->name(), "roam");
+  EXPECT_EQ(m->knob()->name, "tau_px");
+  EXPECT_EQ(m->knob()->value, ig::render::RoamOptions{}.tau_px);
+  EXPECT_EQ(m->column_names().size(), 4u);
+  EXPECT_THROW(ig::render::make_method("roam", *w.scene, w.shader_dir, {}, -1.0), std::invalid_argument);
+  EXPECT_THROW(ig::render::make_method("roam", *w.scene, w.shader_dir, {}, std::nan("")), std::invalid_argument);
+}
+
+}  // namespace

@@ -1,0 +1,161 @@
+#include "render/cdlod_method.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace ig::render {
+
+namespace {
+constexpr int Q = lod::kChunkQuads;
+constexpr int kMaxLods = 16;  // shaders/cdlod.vert's uniform arrays
+}  // namespace
+
+CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range)
+    : scene_(scene),
+      lod0_range_(lod0_range),
+      program_(shader_dir, "cdlod.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
+      tree_(scene.heightfield()) {
+  if (!(lod0_range > 0.0) || !std::isfinite(lod0_range))
+    throw std::invalid_argument("cdlod: lod0_range must be a positive number of samples, got " +
+                                std::to_string(lod0_range));
+  if (tree_.depth() >= kMaxLods)
+    throw std::invalid_argument("cdlod: the DEM needs " + std::to_string(tree_.depth() + 1) + " LODs, at most " +
+                                std::to_string(kMaxLods) + " are supported");
+  const auto& hf = scene.heightfield();
+  ranges_.lod0_range_m = lod0_range * std::sqrt(hf.spacing_x_m * hf.spacing_y_m);
+  ranges_.top_lod = tree_.depth();
+
+  for (const lod::ChunkNode& n : tree_.nodes()) {
+    std::array<int, 4> t{};
+    for (int q = 0; q < 4; ++q)
+      t[q] = lod::grid_triangle_count(hf, n.i0 + (q & 1) * n.size() / 2, n.j0 + (q >> 1) * n.size() / 2, Q / 2,
+                                      n.stride);
+    quadrant_triangles_.push_back(t);
+  }
+
+  std::vector<std::int16_t> verts;
+  for (int j = 0; j <= Q; ++j)
+    for (int i = 0; i <= Q; ++i) verts.insert(verts.end(), {std::int16_t(i), std::int16_t(j)});
+  // Indices quarter by quarter (child order), so a quarter is one range.
+  std::vector<std::uint16_t> idx;
+  auto v = [](int i, int j) { return std::uint16_t(j * (Q + 1) + i); };
+  for (int q = 0; q < 4; ++q)
+    for (int j = (q >> 1) * Q / 2; j < ((q >> 1) + 1) * Q / 2; ++j)
+      for (int i = (q & 1) * Q / 2; i < ((q & 1) + 1) * Q / 2; ++i)
+        idx.insert(idx.end(), {v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j), v(i + 1, j + 1), v(i, j + 1)});
+  quadrant_indices_ = GLsizei(idx.size() / 4);
+  glCreateBuffers(1, &vbo_);
+  glNamedBufferStorage(vbo_, GLsizeiptr(verts.size() * sizeof(verts[0])), verts.data(), 0);
+  glCreateBuffers(1, &ibo_);
+  glNamedBufferStorage(ibo_, GLsizeiptr(idx.size() * sizeof(idx[0])), idx.data(), 0);
+  glCreateVertexArrays(1, &vao_);
+  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 2 * sizeof(std::int16_t));
+  glVertexArrayElementBuffer(vao_, ibo_);
+  glEnableVertexArrayAttrib(vao_, 0);
+  glVertexArrayAttribIFormat(vao_, 0, 2, GL_SHORT, 0);
+  glVertexArrayAttribBinding(vao_, 0, 0);
+}
+
+CdlodMethod::~CdlodMethod() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vbo_);
+  glDeleteBuffers(1, &ibo_);
+}
+
+std::vector<std::string> CdlodMethod::column_names() const {
+  return {"nodes_drawn", "quarters_drawn", "lod_min", "lod_max"};
+}
+
+void CdlodMethod::update(const Camera& camera) {
+  const Frustum frustum = frustum_of(camera);
+  areas_ = lod::cdlod_select(tree_, ranges_, camera.position, [&](const glm::dvec3& lo, const glm::dvec3& hi) {
+    return frustum.intersects_box(lo - camera.position, hi - camera.position);
+  });
+}
+
+MethodFrameStats CdlodMethod::draw(const Camera& camera, const gl::RenderTarget&) {
+  const auto& hf = scene_.heightfield();
+  MethodFrameStats stats;
+  int quarters = 0, lmin = ranges_.top_lod, lmax = 0;
+  if (!areas_.empty()) {
+    stats.passes = "terrain";
+    program_.use();
+    scene_.bind_common(program_, camera);
+    std::array<float, kMaxLods> start{}, end{};
+    for (int l = 0; l < ranges_.top_lod; ++l) {
+      start[size_t(l)] = float(ranges_.morph_start(l));
+      end[size_t(l)] = float(ranges_.morph_end(l));
+    }
+    glProgramUniform1fv(program_.id(), program_.location("u_morph_start"), kMaxLods, start.data());
+    glProgramUniform1fv(program_.id(), program_.location("u_morph_end"), kMaxLods, end.data());
+    program_.set("u_top_lod", ranges_.top_lod);
+    // The eye as a whole sample plus the rest (in double, then float).
+    const glm::ivec2 eye_sample(int(std::floor(camera.position.x / hf.spacing_x_m)),
+                                int(std::floor(camera.position.y / hf.spacing_y_m)));
+    program_.set("u_eye_sample", eye_sample);
+    program_.set("u_eye_frac", glm::vec3(float(camera.position.x - eye_sample.x * hf.spacing_x_m),
+                                         float(camera.position.y - eye_sample.y * hf.spacing_y_m),
+                                         float(camera.position.z)));
+    const GLint loc_origin = program_.location("u_origin"), loc_lod = program_.location("u_lod");
+    glBindVertexArray(vao_);
+    for (const lod::CdlodArea& a : areas_) {
+      const lod::ChunkNode& n = tree_.node(a.node);
+      glProgramUniform2i(program_.id(), loc_origin, n.i0, n.j0);
+      glProgramUniform1i(program_.id(), loc_lod, a.lod);
+      if (a.quadrant < 0) {
+        glDrawElements(GL_TRIANGLES, 4 * quadrant_indices_, GL_UNSIGNED_SHORT, nullptr);
+        stats.triangles += n.triangles;
+      } else {
+        const size_t offset = size_t(a.quadrant) * size_t(quadrant_indices_) * sizeof(std::uint16_t);
+        glDrawElements(GL_TRIANGLES, quadrant_indices_, GL_UNSIGNED_SHORT, reinterpret_cast<const void*>(offset));
+        stats.triangles += quadrant_triangles_[size_t(a.node)][size_t(a.quadrant)];
+        ++quarters;
+      }
+      lmin = std::min(lmin, a.lod);
+      lmax = std::max(lmax, a.lod);
+    }
+  }
+  stats.columns = {{"nodes_drawn", double(areas_.size() - size_t(quarters))},
+                   {"quarters_drawn", double(quarters)},
+                   {"lod_min", areas_.empty() ? 0.0 : double(lmin)},
+                   {"lod_max", double(lmax)}};
+  return stats;
+}
+
+std::optional<double> CdlodMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
+  double worst = 0.0;  // metres per metre of distance
+  for (const lod::CdlodArea& a : areas_) {
+    const lod::ChunkNode& n = tree_.node(a.node);
+    glm::dvec3 lo, hi;
+    if (a.quadrant < 0) {
+      tree_.box(n, lo, hi);
+    } else {
+      tree_.quadrant_box(n, a.quadrant, lo, hi);
+    }
+    const double near_d = std::max(lod::box_distance(camera.position, lo, hi), camera.near_m);
+    const double far_d = std::max(lod::box_far_distance(camera.position, lo, hi), near_d);
+    // Walk up the LODs the piece's points show: LOD l from max(near, where
+    // l-1's morph ends) on; in [morph_start(l), morph_end(l)) it blends l and l+1.
+    int anc = a.node;
+    for (int l = a.lod;; ++l) {
+      const lod::ChunkNode& node_l = tree_.node(anc);
+      const double from = l == a.lod ? near_d : std::max(near_d, ranges_.morph_end(l - 1));
+      if (from > far_d) break;
+      const double ms = ranges_.morph_start(l);
+      if (from < ms) worst = std::max(worst, node_l.own_error_m / from);
+      if (l >= ranges_.top_lod || node_l.parent < 0) break;
+      if (far_d >= ms) {
+        const double e = std::max(node_l.own_error_m, tree_.node(node_l.parent).own_error_m);
+        worst = std::max(worst, e / std::max(from, ms));
+      }
+      if (far_d < ranges_.morph_end(l)) break;
+      anc = node_l.parent;
+    }
+  }
+  return worst * pixels_per_radian(camera, viewport_height_px);
+}
+
+}  // namespace ig::render

@@ -1,0 +1,180 @@
+#include "render/chunked_method.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace ig::render {
+
+namespace {
+constexpr int Q = lod::kChunkQuads;
+constexpr int kLog2Q = 5;  // 2^5 = Q: a chunk's corners lie on the grid of any chunk up to 5 levels coarser
+static_assert((1 << kLog2Q) == Q);
+// Skirts reach this far below the lowest height they must cover, so a
+// skirt bottom never coincides with a surface.
+constexpr float kSkirtMarginM = 1.0f;
+}  // namespace
+
+ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
+    : scene_(scene),
+      tau_px_(tau_px),
+      program_(shader_dir, "chunked.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
+      tree_(scene.heightfield()) {
+  if (!(tau_px > 0.0) || !std::isfinite(tau_px))
+    throw std::invalid_argument("chunked: tau_px must be a positive number of pixels, got " + std::to_string(tau_px));
+  // Vertices (x, y, skirt side + 1 or 0, pad): the surface grid, then each
+  // side's edge again as the skirt's lower edge.
+  std::vector<std::int16_t> verts;
+  auto vertex = [&](int x, int y, int skirt) {
+    verts.insert(verts.end(), {std::int16_t(x), std::int16_t(y), std::int16_t(skirt), 0});
+    return std::uint32_t(verts.size() / 4 - 1);
+  };
+  for (int j = 0; j <= Q; ++j)
+    for (int i = 0; i <= Q; ++i) vertex(i, j, 0);
+  auto surface = [](int x, int y) { return std::uint32_t(y * (Q + 1) + x); };
+  std::vector<std::uint32_t> idx;
+  for (int j = 0; j < Q; ++j)
+    for (int i = 0; i < Q; ++i)
+      idx.insert(idx.end(), {surface(i, j), surface(i + 1, j), surface(i + 1, j + 1), surface(i, j),
+                             surface(i + 1, j + 1), surface(i, j + 1)});
+  surface_indices_ = GLsizei(idx.size());
+  for (int side = 0; side < 4; ++side) {
+    auto edge = [side](int t) {
+      switch (side) {
+        case 0: return glm::ivec2(t, 0);
+        case 1: return glm::ivec2(Q, t);
+        case 2: return glm::ivec2(t, Q);
+        default: return glm::ivec2(0, t);
+      }
+    };
+    std::vector<std::uint32_t> low;
+    for (int t = 0; t <= Q; ++t) low.push_back(vertex(edge(t).x, edge(t).y, side + 1));
+    for (int t = 0; t < Q; ++t) {
+      const std::uint32_t a = surface(edge(t).x, edge(t).y), b = surface(edge(t + 1).x, edge(t + 1).y);
+      idx.insert(idx.end(), {a, b, low[t + 1], a, low[t + 1], low[t]});
+    }
+  }
+  total_indices_ = GLsizei(idx.size());
+
+  glCreateBuffers(1, &vbo_);
+  glNamedBufferStorage(vbo_, GLsizeiptr(verts.size() * sizeof(verts[0])), verts.data(), 0);
+  glCreateBuffers(1, &ibo_);
+  glNamedBufferStorage(ibo_, GLsizeiptr(idx.size() * sizeof(idx[0])), idx.data(), 0);
+  glCreateVertexArrays(1, &vao_);
+  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 4 * sizeof(std::int16_t));
+  glVertexArrayElementBuffer(vao_, ibo_);
+  glEnableVertexArrayAttrib(vao_, 0);
+  glVertexArrayAttribIFormat(vao_, 0, 2, GL_SHORT, 0);
+  glVertexArrayAttribBinding(vao_, 0, 0);
+  glEnableVertexArrayAttrib(vao_, 1);
+  glVertexArrayAttribIFormat(vao_, 1, 1, GL_SHORT, 2 * sizeof(std::int16_t));
+  glVertexArrayAttribBinding(vao_, 1, 0);
+}
+
+ChunkedMethod::~ChunkedMethod() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vbo_);
+  glDeleteBuffers(1, &ibo_);
+}
+
+std::vector<std::string> ChunkedMethod::column_names() const {
+  return {"chunks_drawn", "level_min", "level_max", "skirt_triangles"};
+}
+
+void ChunkedMethod::set_viewport(int, int height_px) {
+  if (height_px > 0) viewport_h_ = height_px;
+}
+
+void ChunkedMethod::select(int k, const Camera& camera, const Frustum& frustum, double ppr) {
+  const lod::ChunkNode& n = tree_.node(k);
+  glm::dvec3 lo, hi;
+  tree_.box(n, lo, hi);
+  if (!frustum.intersects_box(lo - camera.position, hi - camera.position)) return;
+  const double d = lod::box_distance(camera.position, lo, hi);
+  if (!n.leaf() && n.error_m / std::max(d, camera.near_m) * ppr > tau_px_) {
+    for (int c : n.children)
+      if (c >= 0) select(c, camera, frustum, ppr);
+    return;
+  }
+  drawn_.push_back({k, d, 0.0f});
+}
+
+void ChunkedMethod::update(const Camera& camera) {
+  drawn_.clear();
+  select(0, camera, frustum_of(camera), pixels_per_radian(camera, viewport_h_));
+
+  // Skirt depth. A crack lies between this chunk's edge and a coarser
+  // neighbour's edge over the same segment. Both edges interpolate DEM
+  // samples: the neighbour's edge is within its error delta_n of the samples
+  // on this chunk's edge, so it is never below min_h - delta_n (min_h: this
+  // chunk's lowest sample). When the neighbour is at most 5 levels coarser,
+  // this chunk's corners are vertices of its grid, so its edge over the
+  // segment interpolates samples of this chunk's edge only: never below
+  // min_h. A skirt down to min_h (or min_h - the largest delta drawn more
+  // than 5 levels up) thus closes every crack, whatever the levels. (A
+  // coarser chunk's own skirt covers the case where its edge is the upper one:
+  // the finer edge interpolates samples of its edge, never below its min_h.)
+  std::vector<float> coarse_error(size_t(tree_.depth()) + 2, 0.0f);  // [k]: max error drawn at levels < k
+  for (const DrawnChunk& d : drawn_) {
+    const lod::ChunkNode& n = tree_.node(d.node);
+    coarse_error[size_t(n.level) + 1] = std::max(coarse_error[size_t(n.level) + 1], n.own_error_m);
+  }
+  for (size_t k = 1; k < coarse_error.size(); ++k) coarse_error[k] = std::max(coarse_error[k], coarse_error[k - 1]);
+  for (DrawnChunk& d : drawn_) {
+    const lod::ChunkNode& n = tree_.node(d.node);
+    const float far_coarse = n.level > kLog2Q ? coarse_error[size_t(n.level - kLog2Q)] : 0.0f;
+    d.skirt_bottom_m = n.heights.min_m - far_coarse - kSkirtMarginM;
+  }
+}
+
+MethodFrameStats ChunkedMethod::draw(const Camera& camera, const gl::RenderTarget&) {
+  const auto& hf = scene_.heightfield();
+  MethodFrameStats stats;
+  long long skirt_triangles = 0;
+  int lmin = tree_.depth(), lmax = 0;
+  if (!drawn_.empty()) {
+    stats.passes = "terrain";
+    program_.use();
+    scene_.bind_common(program_, camera);
+    const GLint loc_origin = program_.location("u_origin"), loc_rel = program_.location("u_origin_rel");
+    const GLint loc_stride = program_.location("u_stride"), loc_sides = program_.location("u_skirt_sides");
+    const GLint loc_bottom = program_.location("u_skirt_bottom");
+    glBindVertexArray(vao_);
+    for (const DrawnChunk& d : drawn_) {
+      const lod::ChunkNode& n = tree_.node(d.node);
+      int sides = 0;
+      for (int s = 0; s < 4; ++s)
+        if (!n.on_dem_edge[s]) {
+          sides |= 1 << s;
+          skirt_triangles += 2LL * n.edge_segments[s];
+        }
+      const glm::dvec3 rel = glm::dvec3(n.i0 * hf.spacing_x_m, n.j0 * hf.spacing_y_m, 0.0) - camera.position;
+      glProgramUniform2i(program_.id(), loc_origin, n.i0, n.j0);
+      glProgramUniform3f(program_.id(), loc_rel, float(rel.x), float(rel.y), float(rel.z));
+      glProgramUniform1i(program_.id(), loc_stride, n.stride);
+      glProgramUniform1i(program_.id(), loc_sides, sides);
+      glProgramUniform1f(program_.id(), loc_bottom, d.skirt_bottom_m);
+      glDrawElements(GL_TRIANGLES, sides ? total_indices_ : surface_indices_, GL_UNSIGNED_INT, nullptr);
+      stats.triangles += n.triangles;
+      lmin = std::min(lmin, n.level);
+      lmax = std::max(lmax, n.level);
+    }
+  }
+  stats.triangles += skirt_triangles;
+  stats.columns = {{"chunks_drawn", double(drawn_.size())},
+                   {"level_min", drawn_.empty() ? 0.0 : double(lmin)},
+                   {"level_max", double(lmax)},
+                   {"skirt_triangles", double(skirt_triangles)}};
+  return stats;
+}
+
+std::optional<double> ChunkedMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
+  double worst = 0.0;
+  for (const DrawnChunk& d : drawn_)
+    worst = std::max(worst, tree_.node(d.node).own_error_m / std::max(d.distance_m, camera.near_m));
+  return worst * pixels_per_radian(camera, viewport_height_px);
+}
+
+}  // namespace ig::render

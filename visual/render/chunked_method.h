@@ -1,0 +1,64 @@
+#pragma once
+// Chunked LOD (Ulrich 2002) as a terrain method. A precomputed quadtree of
+// chunks (lod/chunk_quadtree.h): each chunk is a 32 x 32-quad regular grid at
+// a stride of 2^(depth - level) samples (leaves: full resolution), with its
+// measured max vertical error delta (made monotone up the tree, so a parent's
+// delta bounds its children's; on natural terrain it roughly halves per
+// level). Per frame the tree is walked from the root, refining a chunk while
+// its projected error delta * pixels_per_radian / D exceeds tau_px (D: eye
+// to the chunk's bounding box), culling against the view frustum.
+//
+// Cracks between chunks of different levels are hidden by skirts: each
+// chunk's edge vertices are repeated hanging down to below every height the
+// neighbouring chunk's edge can take there (see skirt_bottom in the .cpp);
+// sides on the DEM's outer edge get none. No morphing: a chunk that splits
+// changes shape at once (a pop of at most tau_px). One shared grid + skirt
+// mesh, shaders/chunked.vert, the shared shading.
+
+#include <vector>
+
+#include "gl/shader_program.h"
+#include "lod/chunk_quadtree.h"
+#include "render/terrain_method.h"
+
+namespace ig::render {
+
+class ChunkedMethod final : public TerrainMethod {
+ public:
+  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
+  ~ChunkedMethod() override;
+  ChunkedMethod(const ChunkedMethod&) = delete;
+  ChunkedMethod& operator=(const ChunkedMethod&) = delete;
+
+  std::string name() const override { return "chunked"; }
+  std::vector<std::string> column_names() const override;
+  void set_viewport(int width_px, int height_px) override;
+  void update(const Camera& camera) override;
+  MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
+  std::optional<ErrorKnob> knob() const override { return ErrorKnob{"tau_px", "px", tau_px_}; }
+  // Max over drawn chunks of (the chunk mesh's own measured error) /
+  // max(D, near), in pixels; skirts hang below the surface and add none.
+  std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
+
+  struct DrawnChunk {
+    int node = 0;
+    double distance_m = 0.0;
+    float skirt_bottom_m = 0.0f;  // absolute height the skirts reach down to
+  };
+  const lod::ChunkQuadtree& tree() const { return tree_; }
+  const std::vector<DrawnChunk>& drawn() const { return drawn_; }
+
+ private:
+  void select(int node, const Camera& camera, const Frustum& frustum, double ppr);
+
+  const TerrainScene& scene_;
+  double tau_px_;
+  int viewport_h_ = 1024;  // until the first set_viewport()
+  gl::ShaderProgram program_;
+  lod::ChunkQuadtree tree_;
+  GLuint vao_ = 0, vbo_ = 0, ibo_ = 0;
+  GLsizei surface_indices_ = 0, total_indices_ = 0;
+  std::vector<DrawnChunk> drawn_;
+};
+
+}  // namespace ig::render

@@ -1,0 +1,73 @@
+#pragma once
+// GeoMipMapping (de Boer 2000) as a terrain method: the DEM in 33 x 33-vertex
+// blocks (lod/geomipmap_blocks.h), each drawn at the coarsest mip level
+// whose projected error rho = delta * pixels_per_radian / D is at most tau_px
+// (D: distance from the eye to the block's bounding box, delta: the level's
+// precomputed max vertical error). Sides next to coarser blocks are stitched
+// to the neighbour's stride, so there are no cracks. One vertex buffer of
+// 33 x 33 offsets, one index buffer per configuration (level + side levels,
+// built on first use), drawn with shaders/terrain_grid.vert and the shared
+// shading; blocks are culled against the view frustum.
+
+#include <unordered_map>
+#include <vector>
+
+#include "gl/shader_program.h"
+#include "lod/geomipmap_blocks.h"
+#include "render/terrain_method.h"
+
+namespace ig::render {
+
+class GeoMipMapMethod final : public TerrainMethod {
+ public:
+  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
+  ~GeoMipMapMethod() override;
+  GeoMipMapMethod(const GeoMipMapMethod&) = delete;
+  GeoMipMapMethod& operator=(const GeoMipMapMethod&) = delete;
+
+  std::string name() const override { return "geomipmap"; }
+  std::vector<std::string> column_names() const override;
+  void set_viewport(int width_px, int height_px) override;
+  void update(const Camera& camera) override;
+  MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
+  std::optional<ErrorKnob> knob() const override { return ErrorKnob{"tau_px", "px", tau_px_}; }
+  // Max over the pieces of the drawn blocks of (error of the triangles
+  // drawn) / max(distance to the piece, near), in pixels. The pieces: the
+  // plain level quads (the level's error, from the block's box) and each
+  // stitched side's strip (its own error, from the strip's box), so a block
+  // under the eye stitched to a coarser neighbour is judged at that edge.
+  std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
+
+  // State of the last update, for tests and logs.
+  struct DrawnBlock {
+    int bx = 0, by = 0;
+    lod::GeoMipConfig config;
+    double distance_m = 0.0;
+    float error_m = 0.0f;  // bound on all its triangles, stitching included (GeoMipMapBlocks::stats)
+    int triangles = 0;
+    double error_per_m = 0.0;  // max over its pieces of error / max(distance, near)
+  };
+  const lod::GeoMipMapBlocks& blocks() const { return blocks_; }
+  const std::vector<int>& levels() const { return levels_; }  // every block's level
+  const std::vector<DrawnBlock>& drawn() const { return drawn_; }
+
+ private:
+  struct Indices {
+    GLuint ibo = 0;
+    GLsizei count = 0;
+  };
+  const Indices& indices_for(const lod::GeoMipConfig& config);
+
+  const TerrainScene& scene_;
+  double tau_px_;
+  int viewport_h_ = 1024;  // until the first set_viewport()
+  gl::ShaderProgram program_;
+  lod::GeoMipMapBlocks blocks_;
+  GLuint vao_ = 0, vbo_ = 0;
+  std::unordered_map<std::uint32_t, Indices> indices_;
+  std::vector<int> levels_;
+  std::vector<double> distances_;  // eye to each block's box, last update
+  std::vector<DrawnBlock> drawn_;
+};
+
+}  // namespace ig::render

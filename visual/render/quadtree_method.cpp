@@ -1,0 +1,47 @@
+#include "render/quadtree_method.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace ig::render {
+
+QuadtreeMethod::QuadtreeMethod(const TerrainScene& scene, const std::string& shader_dir, QuadtreeOptions options)
+    : scene_(scene), options_(options), tess_(scene.heightfield()), stream_(shader_dir) {
+  if (!(options_.c1 > 0.0) || !std::isfinite(options_.c1) || !(options_.c2 >= 0.0) || !std::isfinite(options_.c2))
+    throw std::invalid_argument("quadtree: C1 must be > 0 and C2 >= 0, both finite (got C1 = " +
+                                std::to_string(options_.c1) + ", C2 = " + std::to_string(options_.c2) + ")");
+  in_view_ = [this](const glm::dvec3& lo, const glm::dvec3& hi) { return frustum_.intersects_box(lo, hi); };
+}
+
+std::vector<std::string> QuadtreeMethod::column_names() const {
+  return {"nodes_evaluated", "splits", "forced_splits", "leaves", "culled_leaves"};
+}
+
+void QuadtreeMethod::update(const Camera& camera) {
+  const auto t0 = std::chrono::steady_clock::now();
+  frustum_ = frustum_of(camera);
+  tess_.update(camera.position, options_.c1, options_.c2, in_view_, std::max(camera.near_m, 1e-3));
+  update_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+MethodFrameStats QuadtreeMethod::draw(const Camera& camera, const gl::RenderTarget&) {
+  stream_.draw(tess_.vertices(), scene_, camera);
+  const auto& s = tess_.stats();
+  MethodFrameStats stats;
+  stats.triangles = s.triangles;
+  stats.passes = s.triangles > 0 ? "terrain" : "";
+  stats.columns = {{"nodes_evaluated", double(s.evaluated)},
+                   {"splits", double(s.splits)},
+                   {"forced_splits", double(s.forced_splits)},
+                   {"leaves", double(s.leaves)},
+                   {"culled_leaves", double(s.culled)}};
+  return stats;
+}
+
+std::optional<double> QuadtreeMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
+  return tess_.stats().max_error_ratio * pixels_per_radian(camera, viewport_height_px);
+}
+
+}  // namespace ig::render

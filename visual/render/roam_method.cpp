@@ -1,0 +1,52 @@
+#include "render/roam_method.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace ig::render {
+
+RoamMethod::RoamMethod(const TerrainScene& scene, const std::string& shader_dir, RoamOptions options)
+    : scene_(scene), options_(options), tess_(scene.heightfield()), stream_(shader_dir) {
+  if (!(options_.tau_px >= 0.0) || !std::isfinite(options_.tau_px))
+    throw std::invalid_argument("roam: tau_px must be a finite value >= 0 (got " + std::to_string(options_.tau_px) +
+                                ")");
+  if (options_.viewport_height_px < 1) options_.viewport_height_px = 1024;
+  in_view_ = [this](const glm::dvec3& lo, const glm::dvec3& hi) { return frustum_.intersects_box(lo, hi); };
+}
+
+std::vector<std::string> RoamMethod::column_names() const {
+  return {"splits", "forced_splits", "bintree_nodes", "culled_leaves"};
+}
+
+void RoamMethod::set_viewport(int, int height_px) {
+  if (height_px > 0) options_.viewport_height_px = height_px;
+}
+
+void RoamMethod::update(const Camera& camera) {
+  const auto t0 = std::chrono::steady_clock::now();
+  frustum_ = frustum_of(camera);
+  tess_.update(camera.position, options_.tau_px, pixels_per_radian(camera, options_.viewport_height_px), in_view_,
+               std::max(camera.near_m, 1e-3));
+  update_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+MethodFrameStats RoamMethod::draw(const Camera& camera, const gl::RenderTarget&) {
+  stream_.draw(tess_.vertices(), scene_, camera);
+  const auto& s = tess_.stats();
+  MethodFrameStats stats;
+  stats.triangles = s.triangles;
+  stats.passes = s.triangles > 0 ? "terrain" : "";
+  stats.columns = {{"splits", double(s.splits)},
+                   {"forced_splits", double(s.forced_splits)},
+                   {"bintree_nodes", double(s.nodes)},
+                   {"culled_leaves", double(s.culled)}};
+  return stats;
+}
+
+std::optional<double> RoamMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
+  return tess_.stats().max_error_ratio * pixels_per_radian(camera, viewport_height_px);
+}
+
+}  // namespace ig::render

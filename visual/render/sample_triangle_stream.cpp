@@ -1,0 +1,46 @@
+#include "render/sample_triangle_stream.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ig::render {
+
+SampleTriangleStream::SampleTriangleStream(const std::string& shader_dir)
+    : program_(shader_dir, "level0.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}) {
+  glCreateBuffers(1, &vbo_);
+  glCreateVertexArrays(1, &vao_);
+  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, sizeof(glm::u16vec2));
+  glEnableVertexArrayAttrib(vao_, 0);
+  glVertexArrayAttribIFormat(vao_, 0, 2, GL_UNSIGNED_SHORT, 0);  // -> ivec2 a_sample
+  glVertexArrayAttribBinding(vao_, 0, 0);
+}
+
+SampleTriangleStream::~SampleTriangleStream() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vbo_);
+}
+
+void SampleTriangleStream::draw(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene,
+                                const Camera& camera) {
+  if (vertices.empty()) return;
+  const GLsizeiptr bytes = GLsizeiptr(vertices.size() * sizeof(glm::u16vec2));
+  // Orphan the old storage (the GPU may still read it) rather than wait for
+  // it; grow geometrically so steady frames never reallocate on our side.
+  if (bytes > capacity_) capacity_ = std::max<GLsizeiptr>(bytes + bytes / 2, 1 << 16);
+  glNamedBufferData(vbo_, capacity_, nullptr, GL_STREAM_DRAW);
+  glNamedBufferSubData(vbo_, 0, bytes, vertices.data());
+
+  const auto& hf = scene.heightfield();
+  const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
+  const glm::ivec2 eye_sample(int(std::floor(camera.position.x / spacing.x)),
+                              int(std::floor(camera.position.y / spacing.y)));
+  program_.use();
+  scene.bind_common(program_, camera);
+  program_.set("u_eye_sample", eye_sample);
+  program_.set("u_eye_frac", glm::vec3(camera.position.x - eye_sample.x * spacing.x,
+                                       camera.position.y - eye_sample.y * spacing.y, camera.position.z));
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices.size()));
+}
+
+}  // namespace ig::render

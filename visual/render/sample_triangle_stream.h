@@ -1,0 +1,35 @@
+#pragma once
+// A triangle list of DEM sample indices rebuilt on the CPU every frame (the
+// ROAM and quadtree baselines), uploaded once per frame into an orphaned
+// stream buffer and drawn with shaders/level0.vert and the shared shading.
+
+#include <epoxy/gl.h>
+
+#include <string>
+#include <vector>
+
+#include <glm/gtc/type_precision.hpp>
+
+#include "gl/shader_program.h"
+#include "render/camera.h"
+#include "render/terrain_scene.h"
+
+namespace ig::render {
+
+class SampleTriangleStream {
+ public:
+  explicit SampleTriangleStream(const std::string& shader_dir);
+  ~SampleTriangleStream();
+  SampleTriangleStream(const SampleTriangleStream&) = delete;
+  SampleTriangleStream& operator=(const SampleTriangleStream&) = delete;
+
+  // Uploads 3 vertices per triangle and draws them into the bound target.
+  void draw(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene, const Camera& camera);
+
+ private:
+  gl::ShaderProgram program_;
+  GLuint vao_ = 0, vbo_ = 0;
+  GLsizeiptr capacity_ = 0;  // bytes allocated for the buffer
+};
+
+}  // namespace ig::render
