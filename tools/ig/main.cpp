@@ -13,6 +13,8 @@ constexpr const char* kHelp =
     "  ig serve [--config FILE] [--udp ADDR:PORT] [--cigi ADDR:PORT --cigi-reply HOST:PORT] [--fgfdm ADDR:PORT]\n"
     "           [--multicast GROUP] [--channel NAME] [--frames N | --seconds S] [--record FILE] [--out DIR]\n"
     "  ig send SCENARIO.json --to ADDR:PORT [--protocol native|cigi|fgfdm] [--rate HZ] [--loss P] ...\n"
+    "  ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
+    "           [--error-samples N] [--match-px PX] [--out DIR]   (error against run time, docs/bench.md)\n"
     "  ig info DEMFILE [--encoding auto|terrain-rgb|png16] [--scale S] [--offset O] [--spacing M]\n"
     "  ig help\n";
 }
@@ -28,6 +30,7 @@ int main(int argc, char** argv) {
   if (cmd == "info") return ig::app::run_info_command(args);
   if (cmd == "serve") return ig::app::run_serve_command(args);
   if (cmd == "send") return ig::app::run_send_command(args);
+  if (cmd == "bench") return ig::app::run_bench_command(args);
   if (cmd == "help" || cmd == "--help" || cmd == "-h") {
     std::fputs(kHelp, stdout);
     return 0;

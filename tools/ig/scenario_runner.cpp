@@ -13,6 +13,8 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 glm::vec3 to_vec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
+}  // namespace
+
 render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& t) {
   render::TwoLevelOptions o;
   o.level0_budget = t.level0_budget;
@@ -22,9 +24,9 @@ render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& t) {
   o.gaussian_beta = t.beta == "gaussian";
   o.max_level1 = t.max_level1;
   o.band_stride = t.band_stride;
+  o.eye_guard = t.eye_guard;
   return o;
 }
-}  // namespace
 
 ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
     : scenario_(std::move(scenario)), options_(options) {
@@ -56,6 +58,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   shading.sky_horizon = to_vec3(r.sky_horizon_rgb);
   shading.fog_visibility_m = r.fog_visibility_m;
   scene_ = std::make_unique<render::TerrainScene>(heightfield_, shading, r.imagery);
+  scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
 
   for (const auto& spec : scenario_.channels) {
     ChannelView v;

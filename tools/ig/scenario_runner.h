@@ -50,6 +50,9 @@ struct FrameResult {
   double pose_ms = 0.0;
 };
 
+// The scenario's two-level settings as method options (what make_method takes).
+render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& spec);
+
 // One frames.csv row for a channel; wall_ms = pose + render + readback + present.
 std::vector<stats::Cell> frame_log_row(const FrameResult& frame, const ChannelView& channel,
                                        double readback_ms, double present_ms);
@@ -86,9 +89,11 @@ class ScenarioRunner {
   void rebuild_method(const io::TwoLevelSpec& twolevel);
   // Windowed: the user closed the window (polls events). Headless: false.
   bool window_closed() { return context_->should_close(); }
+  // The camera render_frame / render_pose use for a pose on a channel
+  // (ig bench renders other methods with exactly these cameras).
+  render::Camera camera_for(const io::Pose& pose, const ChannelView& channel) const;
 
  private:
-  render::Camera camera_for(const io::Pose& pose, const ChannelView& channel) const;
 
   io::Scenario scenario_;
   RunOptions options_;

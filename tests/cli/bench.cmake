@@ -1,0 +1,46 @@
+# ig bench end to end (docs/bench.md) on a tiny generated terrain: the
+# outputs are well formed (tests/tools/check_bench_output.py), bad arguments
+# exit 2 with a clear message. The checker runs last: its "ok" line is what
+# passes the test (set -e stops before it on any earlier failure).
+set(IG_TEST_OUT ${CMAKE_BINARY_DIR}/test-out)
+set(IG_BENCH_TINY ${CMAKE_SOURCE_DIR}/tests/tools/bench_tiny_scenario.json)
+set(IG_BENCH_CHECK ${CMAKE_SOURCE_DIR}/tests/tools/check_bench_output.py)
+
+# Default knobs: one row per method, 8 frames (the whole tiny flight), 5 sampled.
+add_test(NAME cli.bench.default_knobs
+  COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/bench_default'
+    '$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,reference --error-samples 5 --out '${IG_TEST_OUT}/bench_default'
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_default' --rows 2 --frames 8 --samples 5 --methods twolevel,reference")
+set_tests_properties(cli.bench.default_knobs PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok")
+
+# --sweep: one row per knob value of each method's knob_sweep (plus its
+# default when the sweep lacks it); --frames subsamples, --size / --fov override.
+add_test(NAME cli.bench.sweep
+  COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/bench_sweep'
+    '$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,reference --sweep --frames 6 --size 128x96 --fov 30 --out '${IG_TEST_OUT}/bench_sweep'
+    rows=$(( $(wc -l < '${IG_TEST_OUT}/bench_sweep/results.csv') - 1 ))
+    test $rows -ge 3
+    grep -q 'image: 128x96, vertical FOV 30 deg' '${IG_TEST_OUT}/bench_sweep/results.md'
+    grep -q '^twolevel,level0_budget,.*,1,' '${IG_TEST_OUT}/bench_sweep/results.csv'
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_sweep' --rows $rows --frames 6 --samples 6 --methods twolevel,reference")
+set_tests_properties(cli.bench.sweep PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok")
+
+add_test(NAME cli.bench.unknown_method
+  COMMAND bash -c "'$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,nope --out '${IG_TEST_OUT}/bench_nope' 2>&1; echo exit=$?")
+set_tests_properties(cli.bench.unknown_method PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "unknown method 'nope' \\(available: .*exit=2")
+
+add_test(NAME cli.bench.bad_size
+  COMMAND bash -c "'$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --size 640by480 --out '${IG_TEST_OUT}/bench_badsize' 2>&1; echo exit=$?")
+set_tests_properties(cli.bench.bad_size PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "--size: expected WxH, got '640by480'.*exit=2")
+
+add_test(NAME cli.bench.bad_fov
+  COMMAND bash -c "'$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --fov 200 --out '${IG_TEST_OUT}/bench_badfov' 2>&1; echo exit=$?")
+set_tests_properties(cli.bench.bad_fov PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "--fov: must be in \\(0, 179\\] degrees.*exit=2")
+
+add_test(NAME cli.bench.missing_scenario
+  COMMAND bash -c "'$<TARGET_FILE:ig>' bench /nonexistent/scn.json --out '${IG_TEST_OUT}/bench_missing' 2>&1; echo exit=$?")
+set_tests_properties(cli.bench.missing_scenario PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "/nonexistent/scn.json.*exit=1")

@@ -1,0 +1,458 @@
+// ig bench SCENARIO.json: every LOD method (and with --sweep every value of
+// its error knob) flown along the same scenario path with the same size and
+// camera; frame time against image error versus the reference renderer.
+// Writes results.csv, results.md, error_vs_time.png, frames.csv and
+// samples.csv (docs/bench.md).
+//
+// The terrain is loaded once (ScenarioRunner, as for ig run) and its
+// TerrainScene shared by every method. The runner's own method is the
+// reference: it renders the sampled frames first and they are kept on the
+// CPU, so the timed runs are never interrupted by a reference render.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+
+#include "bench_report.h"
+#include "cli_args.h"
+#include "commands.h"
+#include "gl/shader_program.h"
+#include "render/frame_renderer.h"
+#include "render/twolevel_method.h"
+#include "scenario_runner.h"
+#include "stats/frame_log.h"
+#include "stats/image_error.h"
+
+namespace ig::app {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
+    "                [--error-samples N] [--match-px PX] [--shader-dir DIR] [--out DIR]\n"
+    "  --methods LIST      comma-separated method names (default: all)\n"
+    "  --sweep             every knob value of each method's sweep (default: its default knob only)\n"
+    "  --frames N          N frames spread evenly over the flight (default: every scenario frame)\n"
+    "  --size WxH          image size (default: the scenario's)\n"
+    "  --fov DEG           vertical field of view (default: the scenario's)\n"
+    "  --error-samples N   frames compared with the reference (default 10, spread evenly)\n"
+    "  --match-px PX       horizon error for the matched-error table (default: twolevel's default)\n"
+    "  --out DIR           output folder (default out/<scenario>_bench)\n"
+    "Exit status: 0 ok, 1 the run failed (or the plot could not be drawn), 2 bad arguments.\n";
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Small relative errors need more digits than frames.csv's fixed 4 decimals.
+std::string g6(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+struct Args {
+  std::string scenario;
+  std::vector<std::string> methods;
+  bool sweep = false;
+  std::optional<int> frames;
+  std::optional<int> width, height;
+  std::optional<double> fov;
+  int error_samples = 10;
+  std::optional<double> match_px;
+  std::string shader_dir;
+  std::string out_dir;
+};
+
+std::vector<std::string> split_methods(const std::string& list) {
+  const auto known = render::method_names();
+  std::vector<std::string> out;
+  if (list == "all") return known;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, comma - start);
+    if (name.empty()) throw UsageError("--methods: empty name in '" + list + "'");
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string choices;
+      for (const auto& n : known) choices += (choices.empty() ? "" : ", ") + n;
+      throw UsageError("--methods: unknown method '" + name + "' (available: " + choices + ", or all)");
+    }
+    if (std::find(out.begin(), out.end(), name) != out.end())
+      throw UsageError("--methods: '" + name + "' given twice");
+    out.push_back(name);
+    start = comma + 1;
+  }
+  return out;
+}
+
+Args parse_args(const std::vector<std::string>& a) {
+  Args args;
+  ArgReader r(a);
+  while (!r.done()) {
+    const std::string f = r.next();
+    if (f == "--methods") args.methods = split_methods(r.value(f));
+    else if (f == "--sweep") args.sweep = true;
+    else if (f == "--frames") args.frames = r.positive_int(f);
+    else if (f == "--size") {
+      int w = 0, h = 0;
+      r.size(f, w, h);
+      if (w > 16384 || h > 16384) throw UsageError("--size: at most 16384x16384");
+      args.width = w;
+      args.height = h;
+    } else if (f == "--fov") {
+      const double v = r.positive_double(f);
+      if (v > 179.0) throw UsageError("--fov: must be in (0, 179] degrees");
+      args.fov = v;
+    } else if (f == "--error-samples") args.error_samples = r.positive_int(f);
+    else if (f == "--match-px") args.match_px = r.positive_double(f);
+    else if (f == "--shader-dir") args.shader_dir = r.value(f);
+    else if (f == "--out") args.out_dir = r.value(f);
+    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
+    else if (args.scenario.empty()) args.scenario = f;
+    else throw UsageError("unexpected argument " + f);
+  }
+  if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
+  if (args.methods.empty()) args.methods = render::method_names();
+  return args;
+}
+
+// N indices spread evenly over [0, total) including both ends (all when N >= total).
+std::vector<int> spread_frames(int total, std::optional<int> n) {
+  std::vector<int> out;
+  if (!n || *n >= total) {
+    for (int k = 0; k < total; ++k) out.push_back(k);
+  } else if (*n == 1) {
+    out.push_back(0);
+  } else {
+    for (int i = 0; i < *n; ++i) out.push_back(int(std::lround(double(i) * (total - 1) / (*n - 1))));
+  }
+  return out;
+}
+
+// Positions (into the rendered frames) of the M sampled frames: the centres
+// of M equal bins, which keeps clear of the very first frame.
+std::vector<int> sample_positions(int frames, int m) {
+  m = std::min(m, frames);
+  std::vector<int> out;
+  for (int j = 0; j < m; ++j) out.push_back(int(std::floor((j + 0.5) * frames / m)));
+  return out;
+}
+
+// One method at one knob value to run.
+struct Variant {
+  std::string method;
+  std::optional<double> knob;  // nullopt: the method's default
+  bool is_default = true;
+};
+
+std::vector<Variant> variants_for(const std::string& method, bool sweep, render::TerrainScene& scene,
+                                  const std::string& shader_dir, const render::TwoLevelOptions& tl) {
+  const auto values = render::knob_sweep(method);
+  if (!sweep || values.empty()) return {{method, std::nullopt, true}};
+  // The default knob value, to mark it (and add it when the sweep lacks it).
+  const auto knob = render::make_method(method, scene, shader_dir, tl)->knob();
+  std::vector<double> v = values;
+  if (knob) {
+    const double d = knob->value;
+    const bool present =
+        std::any_of(v.begin(), v.end(), [&](double x) { return std::abs(x - d) <= 1e-9 * std::max(1.0, std::abs(d)); });
+    if (!present) {
+      // Keep the sweep's order (least to most accurate) whichever way the knob runs.
+      const bool ascending = v.back() >= v.front();
+      auto pos = std::find_if(v.begin(), v.end(), [&](double x) { return ascending ? x > d : x < d; });
+      v.insert(pos, d);
+    }
+  }
+  std::vector<Variant> out;
+  for (double x : v)
+    out.push_back({method, x, knob && std::abs(x - knob->value) <= 1e-9 * std::max(1.0, std::abs(knob->value))});
+  return out;
+}
+
+std::string cpu_description() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, model;
+  int threads = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("processor", 0) == 0) ++threads;
+    if (model.empty() && line.rfind("model name", 0) == 0) {
+      const auto c = line.find(':');
+      if (c != std::string::npos) model = line.substr(c + 2);
+    }
+  }
+  if (model.empty()) model = "unknown CPU";
+  return model + ", " + std::to_string(threads) + " hardware threads";
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  if (gethostname(buf, sizeof buf - 1) != 0) return "unknown";
+  return buf;
+}
+
+std::string command_line(const std::vector<std::string>& argv) {
+  std::string s = "ig bench";
+  for (const auto& a : argv) s += " " + (a.find_first_of(" \t'\"") == std::string::npos ? a : "'" + a + "'");
+  return s;
+}
+
+// Progress on stderr: a bar redrawn in place on a terminal, one line per
+// method and knob otherwise (logs stay readable).
+class Progress {
+ public:
+  Progress(bool tty, long long total) : tty_(tty), total_(std::max(total, 1LL)) {}
+  void step(const std::string& label, int frame, int frames) {
+    ++done_;
+    if (!tty_) return;
+    constexpr int kBar = 30;
+    const int filled = int(kBar * double(done_) / double(total_));
+    std::fprintf(stderr, "\rig bench [%s%s] %3d%%  %-36s frame %d/%d   ", std::string(filled, '#').c_str(),
+                 std::string(kBar - filled, '.').c_str(), int(100.0 * done_ / total_), label.c_str(), frame, frames);
+    std::fflush(stderr);
+  }
+  void line(const std::string& text) {
+    if (tty_) std::fprintf(stderr, "\r%-100s\r", "");
+    std::fprintf(stderr, "ig bench: %s\n", text.c_str());
+  }
+  void finish() {
+    if (tty_) std::fprintf(stderr, "\r%-100s\r", "");
+  }
+
+ private:
+  bool tty_;
+  long long total_, done_ = 0;
+};
+
+std::string label_of(const Variant& v, const render::TerrainMethod& m) {
+  const auto k = m.knob();
+  if (!k) return v.method;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", k->value);
+  return v.method + " " + k->name + "=" + buf;
+}
+
+}  // namespace
+
+int run_bench_command(const std::vector<std::string>& argv) {
+  Args args;
+  try {
+    args = parse_args(argv);
+  } catch (const UsageError& e) {
+    std::cerr << "ig bench: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+  const auto start = Clock::now();
+  try {
+    io::Scenario scenario = io::load_scenario(args.scenario);
+    namespace fs = std::filesystem;
+    const fs::path out = args.out_dir.empty() ? fs::path("out") / (scenario.name + "_bench") : fs::path(args.out_dir);
+    fs::create_directories(out);
+
+    // The first channel only; --fov replaces the scenario's (and that channel's own) field of view.
+    scenario.channels.resize(1);
+    if (args.fov) {
+      scenario.render.fov_y_deg = *args.fov;
+      scenario.channels[0].fov_y_deg.reset();
+    }
+    RunOptions run;
+    run.width = args.width;
+    run.height = args.height;
+    run.method = "reference";
+    run.headless = true;
+    run.shader_dir = args.shader_dir.empty() ? gl::default_shader_dir() : args.shader_dir;
+    ScenarioRunner runner(std::move(scenario), run);
+    const auto& s = runner.scenario();
+    const auto& hf = runner.heightfield();
+    const int width = s.render.width, height = s.render.height;
+    const render::TwoLevelOptions tl_options = twolevel_options(s.render.twolevel);
+
+    const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
+    const std::vector<int> sample_pos = sample_positions(int(frames.size()), args.error_samples);
+    std::vector<Variant> variants;
+    for (const auto& m : args.methods)
+      for (auto& v : variants_for(m, args.sweep, runner.scene(), run.shader_dir, tl_options)) variants.push_back(v);
+
+    Progress progress(isatty(STDERR_FILENO) != 0,
+                      (long long)sample_pos.size() + (long long)variants.size() * (long long)frames.size());
+
+    // Reference frames for the sampled frames, rendered once and kept.
+    auto& ref_channel = runner.channels().front();
+    std::map<int, stats::FrameImage> reference;  // by position in `frames`
+    std::map<int, render::Camera> reference_camera;
+    {
+      const auto t0 = Clock::now();
+      for (int p : sample_pos) {
+        runner.render_frame(frames[p]);
+        reference[p] = stats::read_frame_image(*ref_channel.target);
+        reference_camera[p] = ref_channel.camera;
+        progress.step("reference images", int(reference.size()), int(sample_pos.size()));
+      }
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "%zu reference frames at %dx%d in %.1f s", sample_pos.size(), width, height,
+                    ms_since(t0) / 1000.0);
+      progress.line(buf);
+    }
+
+    auto camera_at = [&](int frame) {
+      return runner.camera_for(runner.pose_at(frame * s.time_step_s), ref_channel);
+    };
+    gl::RenderTarget target(width, height);
+    stats::FrameLog frames_csv((out / "frames.csv").string());
+    stats::FrameLog samples_csv((out / "samples.csv").string());
+    std::vector<BenchRow> rows;
+    for (const Variant& v : variants) {
+      const auto t_variant = Clock::now();
+      BenchRow row;
+      row.method = v.method;
+      const auto t0 = Clock::now();
+      auto method = render::make_method(v.method, runner.scene(), run.shader_dir, tl_options, v.knob);
+      row.build_ms = ms_since(t0);
+      row.knob = method->knob();
+      row.default_knob = v.is_default;
+      render::FrameRenderer renderer(runner.scene(), *method, run.shader_dir);
+      const std::string label = label_of(v, *method);
+      const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
+
+      renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
+      std::vector<double> frame_ms, lod_ms, triangles, bounds, depth_p95;
+      double horizon_sum = 0.0, sq_sum = 0.0, samples_px = 0.0, holes = 0.0, interior_holes = 0.0, enclosed_holes = 0.0,
+             ref_px = 0.0;
+      size_t next_sample = 0;
+      for (int i = 0; i < int(frames.size()); ++i) {
+        const render::Camera camera = camera_at(frames[i]);
+        const auto tf = Clock::now();
+        const render::ViewResult vr = renderer.render(camera, target);
+        const double ms = ms_since(tf);
+        frame_ms.push_back(ms);
+        lod_ms.push_back(vr.timings.lod_ms);
+        triangles.push_back(double(vr.method.triangles));
+        frames_csv.add_row({{"method", v.method},
+                            knob_cell,
+                            {"frame", frames[i]},
+                            {"frame_ms", ms},
+                            {"lod_ms", vr.timings.lod_ms},
+                            {"terrain_ms", vr.timings.terrain_ms},
+                            {"sky_ms", vr.timings.sky_ms},
+                            {"triangles", vr.method.triangles}});
+        if (next_sample < sample_pos.size() && sample_pos[next_sample] == i) {
+          ++next_sample;
+          if (reference_camera[i].position != camera.position)
+            throw std::logic_error("reference and method cameras differ at frame " + std::to_string(frames[i]));
+          const stats::FrameImage img = stats::read_frame_image(target);
+          const stats::ImageError e = stats::image_error(img, reference[i], camera);
+          const auto bound = method->error_bound_px(camera, height);
+          horizon_sum += e.horizon_mean_px;
+          row.horizon_max_px = std::max(row.horizon_max_px, e.horizon_max_px);
+          depth_p95.push_back(e.depth_rel_p95);
+          row.depth_rel_max = std::max(row.depth_rel_max, e.depth_rel_max);
+          sq_sum += e.mse * 3.0 * width * height;
+          samples_px += 3.0 * width * height;
+          holes += double(e.holes);
+          interior_holes += double(e.interior_holes);
+          enclosed_holes += double(e.enclosed_holes);
+          ref_px += double(e.reference_terrain_pixels);
+          if (bound) bounds.push_back(*bound);
+          samples_csv.add_row({{"method", v.method},
+                               knob_cell,
+                               {"frame", frames[i]},
+                               {"frame_ms", ms},
+                               {"horizon_mean_px", e.horizon_mean_px},
+                               {"horizon_max_px", e.horizon_max_px},
+                               {"horizon_columns", e.horizon_columns},
+                               {"depth_rel_p95", g6(e.depth_rel_p95)},
+                               {"depth_rel_max", g6(e.depth_rel_max)},
+                               {"psnr_db", e.psnr_db},
+                               {"holes", e.holes},
+                               {"interior_holes", e.interior_holes},
+                               {"enclosed_holes", e.enclosed_holes},
+                               {"reference_terrain_px", e.reference_terrain_pixels},
+                               bound ? stats::Cell("bound_px", *bound) : stats::Cell("bound_px", std::string())});
+        }
+        progress.step(label, i + 1, int(frames.size()));
+      }
+      const int n = int(sample_pos.size());
+      row.frames = int(frames.size());
+      row.frame_ms_median = stats::percentiles(frame_ms).median;
+      row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
+      row.lod_ms_median = stats::percentiles(lod_ms).median;
+      row.triangles_median = stats::percentiles(triangles).median;
+      row.error_samples = n;
+      row.horizon_mean_px = n ? horizon_sum / n : 0.0;
+      row.depth_rel_p95 = stats::percentiles(depth_p95).median;
+      row.psnr_db = stats::psnr_db_from_mse(samples_px > 0 ? sq_sum / samples_px : 0.0, samples_px);
+      row.holes_mean = n ? holes / n : 0.0;
+      row.interior_holes_mean = n ? interior_holes / n : 0.0;
+      row.enclosed_holes_mean = n ? enclosed_holes / n : 0.0;
+      row.hole_fraction = ref_px > 0 ? holes / ref_px : 0.0;
+      if (!bounds.empty() && int(bounds.size()) == n) {
+        row.bound_px_median = stats::percentiles(bounds).median;
+        row.bound_px_max = stats::percentiles(bounds).max;
+      }
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "%-36s %d frames: median %.2f ms, p95 %.2f ms, horizon mean %.3f px, max %.0f px (%.1f s)",
+                    label.c_str(), row.frames, row.frame_ms_median, row.frame_ms_p95, row.horizon_mean_px,
+                    row.horizon_max_px, ms_since(t_variant) / 1000.0);
+      progress.line(buf);
+      rows.push_back(row);
+    }
+    progress.finish();
+
+    // The matched-error target: --match-px, else the two-level method's default.
+    std::optional<double> match_target = args.match_px;
+    std::string target_source = "--match-px";
+    if (!match_target)
+      for (const auto& r : rows)
+        if (r.method == "twolevel" && r.default_knob) {
+          match_target = r.horizon_mean_px;
+          target_source = "the two-level method's default setting";
+        }
+
+    BenchContext c;
+    c.command_line = command_line(argv);
+    c.scenario_name = s.name;
+    c.scenario_file = args.scenario;
+    c.gl_renderer = runner.context().gl_renderer();
+    c.gl_version = runner.context().gl_version();
+    c.cpu = cpu_description();
+    c.host = host_name();
+    char terrain[512];
+    std::snprintf(terrain, sizeof terrain, "%s (%dx%d samples, %.1f x %.1f m spacing, loaded in %.0f ms)",
+                  hf.source.c_str(), hf.width, hf.height, hf.spacing_x_m, hf.spacing_y_m, runner.load_ms());
+    c.terrain = terrain;
+    c.width = width;
+    c.height = height;
+    c.fov_y_deg = ref_channel.spec.fov_y_deg.value_or(s.render.fov_y_deg);
+    c.frames = int(frames.size());
+    c.scenario_frames = runner.frame_count();
+    c.time_step_s = s.time_step_s;
+    c.frame_indices = frames;
+    for (int p : sample_pos) c.sample_indices.push_back(frames[p]);
+    c.sweep = args.sweep;
+    c.wall_s = ms_since(start) / 1000.0;
+
+    write_bench_csv((out / "results.csv").string(), rows);
+    write_bench_markdown((out / "results.md").string(), c, rows, match_target, target_source);
+    const bool plotted = plot_error_vs_time((out / "error_vs_time.png").string(), rows, match_target,
+                                            s.name + " / " + std::to_string(width) + "x" + std::to_string(height) +
+                                                " / FOV " + std::to_string(int(std::lround(c.fov_y_deg))) + " / " +
+                                                c.gl_renderer);
+    std::printf("ig bench: %s, %zu method/knob rows x %d frames at %dx%d, FOV %g, on %s in %.1f s\n", s.name.c_str(),
+                rows.size(), c.frames, width, height, c.fov_y_deg, c.gl_renderer.c_str(), ms_since(start) / 1000.0);
+    std::printf("ig bench: outputs in %s (results.csv, results.md, frames.csv, samples.csv%s)\n",
+                out.string().c_str(), plotted ? ", error_vs_time.png" : "");
+    return plotted ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::cerr << "ig bench: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace ig::app

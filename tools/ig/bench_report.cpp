@@ -1,0 +1,250 @@
+#include "bench_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+
+namespace ig::app {
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+std::string num(double v) { return fmt("%.6g", v); }
+std::string opt(const std::optional<double>& v, const char* f = "%.6g") { return v ? fmt(f, *v) : ""; }
+
+// Methods in the order they first appear, each with its rows in sweep order.
+std::vector<std::pair<std::string, std::vector<const BenchRow*>>> by_method(const std::vector<BenchRow>& rows) {
+  std::vector<std::pair<std::string, std::vector<const BenchRow*>>> out;
+  for (const auto& r : rows) {
+    auto it = std::find_if(out.begin(), out.end(), [&](const auto& p) { return p.first == r.method; });
+    if (it == out.end()) out.push_back({r.method, {&r}});
+    else it->second.push_back(&r);
+  }
+  return out;
+}
+
+std::string knob_text(const BenchRow& r) {
+  if (!r.knob) return "-";
+  return r.knob->name + "=" + num(r.knob->value) + (r.default_knob ? " (default)" : "");
+}
+
+// Time at `target` along one method's curve (rows in sweep order).
+MatchedRow match_one(const std::string& method, const std::vector<const BenchRow*>& pts, double target) {
+  MatchedRow m;
+  m.method = method;
+  const double eps = 1e-9 * std::max(1.0, std::abs(target));
+  // A point at the target gives its own time (the default target is the
+  // two-level default's own error); otherwise interpolate between neighbours.
+  std::optional<double> best;
+  for (const BenchRow* p : pts)
+    if (std::abs(p->horizon_mean_px - target) <= eps) best = std::min(best.value_or(p->frame_ms_median), p->frame_ms_median);
+  const bool exact = best.has_value();
+  for (size_t k = 0; !exact && k + 1 < pts.size(); ++k) {
+    const double e0 = pts[k]->horizon_mean_px, e1 = pts[k + 1]->horizon_mean_px;
+    const double t0 = pts[k]->frame_ms_median, t1 = pts[k + 1]->frame_ms_median;
+    if (target < std::min(e0, e1) - eps || target > std::max(e0, e1) + eps) continue;
+    const double ms = std::abs(e1 - e0) <= eps ? std::min(t0, t1) : t0 + (target - e0) / (e1 - e0) * (t1 - t0);
+    best = std::min(best.value_or(ms), ms);
+  }
+  if (best) {
+    m.kind = exact ? MatchKind::Measured : MatchKind::Interpolated;
+    m.frame_ms = *best;
+    return m;
+  }
+  const bool all_below = std::all_of(pts.begin(), pts.end(), [&](const BenchRow* p) { return p->horizon_mean_px < target; });
+  if (all_below) {
+    m.kind = MatchKind::AtMost;
+    m.frame_ms = (*std::min_element(pts.begin(), pts.end(), [](auto a, auto b) {
+                   return a->frame_ms_median < b->frame_ms_median;
+                 }))->frame_ms_median;
+  } else {
+    m.kind = MatchKind::NotReached;
+    m.frame_ms = (*std::min_element(pts.begin(), pts.end(), [](auto a, auto b) {
+                   return a->horizon_mean_px < b->horizon_mean_px;
+                 }))->frame_ms_median;
+  }
+  return m;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string matched_ms_text(const MatchedRow& m) {
+  const std::string v = fmt("%.2f", m.frame_ms);
+  switch (m.kind) {
+    case MatchKind::Measured:
+    case MatchKind::Interpolated: return v;
+    case MatchKind::AtMost: return "<= " + v;
+    case MatchKind::NotReached: return "> " + v;
+  }
+  return v;
+}
+
+std::string how_text(MatchKind k) {
+  switch (k) {
+    case MatchKind::Measured: return "measured at the target";
+    case MatchKind::Interpolated: return "interpolated on its sweep";
+    case MatchKind::AtMost: return "every point is more accurate: its cheapest point";
+    case MatchKind::NotReached: return "never that accurate: its most accurate point";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::vector<MatchedRow> match_horizon_error(const std::vector<BenchRow>& rows, double target_px) {
+  std::vector<MatchedRow> out;
+  for (const auto& [method, pts] : by_method(rows)) out.push_back(match_one(method, pts, target_px));
+  const auto tl = std::find_if(out.begin(), out.end(), [](const MatchedRow& m) { return m.method == "twolevel"; });
+  if (tl != out.end() && (tl->kind == MatchKind::Measured || tl->kind == MatchKind::Interpolated) &&
+      tl->frame_ms > 0.0)
+    for (auto& m : out) m.ratio = m.frame_ms / tl->frame_ms;
+  return out;
+}
+
+void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows) {
+  std::ofstream o(path);
+  if (!o) throw std::runtime_error(path + ": cannot create");
+  o << "method,knob_name,knob_value,knob_unit,is_default,build_ms,frames,frame_ms_median,frame_ms_p95,"
+       "lod_ms_median,triangles_median,error_samples,horizon_mean_px,horizon_max_px,depth_rel_p95,"
+       "depth_rel_max,psnr_db,holes_mean,hole_fraction,interior_holes_mean,enclosed_holes_mean,bound_px_median,"
+       "bound_px_max\n";
+  for (const auto& r : rows) {
+    o << csv_field(r.method) << ',' << (r.knob ? csv_field(r.knob->name) : "") << ','
+      << (r.knob ? num(r.knob->value) : "") << ',' << (r.knob ? csv_field(r.knob->unit) : "") << ','
+      << (r.default_knob ? 1 : 0) << ',' << fmt("%.3f", r.build_ms) << ',' << r.frames << ','
+      << fmt("%.4f", r.frame_ms_median) << ',' << fmt("%.4f", r.frame_ms_p95) << ',' << fmt("%.4f", r.lod_ms_median)
+      << ',' << fmt("%.10g", r.triangles_median) << ',' << r.error_samples << ',' << num(r.horizon_mean_px) << ','
+      << num(r.horizon_max_px) << ',' << num(r.depth_rel_p95) << ',' << num(r.depth_rel_max) << ','
+      << num(r.psnr_db) << ',' << num(r.holes_mean) << ',' << num(r.hole_fraction) << ','
+      << num(r.interior_holes_mean) << ',' << num(r.enclosed_holes_mean) << ',' << opt(r.bound_px_median) << ',' << opt(r.bound_px_max) << '\n';
+  }
+}
+
+void write_bench_markdown(const std::string& path, const BenchContext& c, const std::vector<BenchRow>& rows,
+                          std::optional<double> target_px, const std::string& target_source) {
+  std::ofstream o(path);
+  if (!o) throw std::runtime_error(path + ": cannot create");
+  auto list = [](const std::vector<int>& v) {
+    std::string s;
+    for (size_t k = 0; k < v.size(); ++k) s += (k ? ", " : "") + std::to_string(v[k]);
+    return s;
+  };
+  o << "# ig bench: " << c.scenario_name << "\n\n"
+    << "- command: `" << c.command_line << "`\n"
+    << "- scenario: `" << c.scenario_file << "`\n"
+    << "- renderer: " << c.gl_renderer << " (" << c.gl_version << ")\n"
+    << "- machine: " << c.cpu << ", host " << c.host << "\n"
+    << "- terrain: " << c.terrain << "\n"
+    << "- image: " << c.width << "x" << c.height << ", vertical FOV " << num(c.fov_y_deg) << " deg\n"
+    << "- frames: " << c.frames << " of the scenario's " << c.scenario_frames << " (time step "
+    << num(c.time_step_s) << " s" << (c.frames < c.scenario_frames ? ", spread evenly over the flight" : "")
+    << "), one untimed warm-up frame per method\n"
+    << "- image error: " << c.sample_indices.size() << " sampled frames (scenario frames " << list(c.sample_indices)
+    << ") against the reference renderer with the same camera\n"
+    << "- knobs: " << (c.sweep ? "each method's sweep (knob_sweep) plus its default" : "each method's default")
+    << "\n"
+    << "- wall time of the whole run: " << fmt("%.1f", c.wall_s) << " s\n\n";
+
+  o << "## Error against run time\n\n"
+    << "Frame time: LOD update + passes + sky, closed with glFinish (wall clock), median and p95 over the frames. "
+       "Errors over the sampled frames. Column definitions: docs/bench.md.\n\n"
+    << "| method | knob | frame ms median | p95 | fps | LOD ms | triangles | horizon mean px | horizon max px | "
+       "depth p95 | depth max | PSNR dB | holes/frame | bound px median / max |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    o << "| " << r.method << " | " << knob_text(r) << " | " << fmt("%.2f", r.frame_ms_median) << " | "
+      << fmt("%.2f", r.frame_ms_p95) << " | " << fmt("%.1f", r.frame_ms_median > 0 ? 1000.0 / r.frame_ms_median : 0.0)
+      << " | " << fmt("%.3f", r.lod_ms_median) << " | " << fmt("%.0f", r.triangles_median) << " | "
+      << fmt("%.3f", r.horizon_mean_px) << " | " << fmt("%.0f", r.horizon_max_px) << " | "
+      << fmt("%.5f", r.depth_rel_p95) << " | " << fmt("%.4f", r.depth_rel_max) << " | " << fmt("%.2f", r.psnr_db)
+      << " | " << fmt("%.1f", r.holes_mean) << " | "
+      << (r.bound_px_median ? fmt("%.2f", *r.bound_px_median) + " / " + fmt("%.2f", *r.bound_px_max) : "none")
+      << " |\n";
+
+  o << "\n## Matched horizon error\n\n";
+  if (!target_px) {
+    o << "No target: the run has no twolevel row and no --match-px.\n";
+    return;
+  }
+  o << "Target: mean horizon error " << fmt("%.3f", *target_px) << " px (" << target_source
+    << "). Each method's median frame time at that error: a point at the target gives its own time, else "
+       "linear interpolation between neighbouring points of its sweep (docs/bench.md); ratio = method ms / "
+       "twolevel ms (how many times faster the two-level method is at equal horizon error).\n\n"
+    << "| method | frame ms at target | how | ratio vs twolevel |\n|---|---|---|---|\n";
+  for (const auto& m : match_horizon_error(rows, *target_px)) {
+    std::string ratio = "n/a (no twolevel time at the target)";
+    if (m.ratio) {
+      const std::string v = fmt("%.2f", *m.ratio);
+      ratio = m.kind == MatchKind::AtMost ? "<= " + v : m.kind == MatchKind::NotReached ? "> " + v : v;
+    }
+    o << "| " << m.method << " | " << matched_ms_text(m) << " | " << how_text(m.kind) << " | " << ratio << " |\n";
+  }
+}
+
+bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>& rows,
+                        std::optional<double> target_px, const std::string& title) {
+  const auto methods = by_method(rows);
+  bool all_positive = true;
+  for (const auto& r : rows) all_positive = all_positive && r.horizon_mean_px > 0.0;
+  const std::string script_path = png_path + ".gp";
+  {
+    std::ofstream gp(script_path);
+    gp << "set terminal pngcairo size 1000,650 noenhanced\n"
+       << "set output '" << png_path << "'\n"
+       << "set title '" << title << "'\n"
+       << "set xlabel 'median frame time (ms, log)'\nset ylabel 'mean horizon error (px" << (all_positive ? ", log" : "")
+       << ")'\n"
+       << "set grid\nset key outside right top\nset logscale x\n"
+       << (all_positive ? "set logscale y\n" : "set yrange [0:*]\n");
+    for (size_t m = 0; m < methods.size(); ++m) {
+      gp << "$m" << m << " << EOD\n";
+      for (const BenchRow* r : methods[m].second)
+        gp << num(r->frame_ms_median) << ' ' << num(r->horizon_mean_px) << " \""
+           << (r->knob ? num(r->knob->value) : std::string("")) << "\"\n";
+      gp << "EOD\n";
+    }
+    if (target_px && (*target_px > 0.0 || !all_positive))
+      gp << "set arrow from graph 0, first " << num(*target_px) << " to graph 1, first " << num(*target_px)
+         << " nohead dt 2 lc rgb 'gray40'\n";
+    gp << "plot ";
+    for (size_t m = 0; m < methods.size(); ++m)
+      gp << (m ? ", " : "") << "$m" << m << " using 1:2 with linespoints lw 2 pt 7 title '" << methods[m].first
+         << "', $m" << m << " using 1:2:3 with labels offset char 0.8,0.6 font ',8' notitle";
+    // The matched-error target across the whole width (an arrow), with a key entry (NaN plots nothing).
+    if (target_px && (*target_px > 0.0 || !all_positive))
+      gp << ", NaN with lines dt 2 lc rgb 'gray40' title 'matched error " << fmt("%.3f", *target_px) << " px'";
+    gp << "\n";
+  }
+  const std::string cmd = "gnuplot '" + script_path + "' 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) {
+    std::cerr << "ig bench: cannot run gnuplot for " << png_path << "\n";
+    return false;
+  }
+  char buf[256];
+  std::string output;
+  while (fgets(buf, sizeof buf, p)) output += buf;
+  const int rc = pclose(p);
+  if (rc != 0 || !std::filesystem::exists(png_path)) {
+    std::cerr << "ig bench: error_vs_time.png not written (is gnuplot installed? tools/setup.sh installs it): "
+              << output << " (script kept: " << script_path << ")\n";
+    return false;
+  }
+  std::filesystem::remove(script_path);
+  return true;
+}
+
+}  // namespace ig::app

@@ -1,0 +1,86 @@
+#pragma once
+// What ig bench leaves behind: results.csv (one row per method and knob
+// value), results.md (the same as a table plus the run's context and the
+// matched-horizon-error table) and error_vs_time.png (gnuplot). Column and
+// metric definitions: docs/bench.md.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/terrain_method.h"
+
+namespace ig::app {
+
+// One method at one knob value, measured along the whole flight.
+struct BenchRow {
+  std::string method;
+  std::optional<render::ErrorKnob> knob;  // nullopt: the method has none
+  bool default_knob = true;               // the setting make_method picks without a knob
+  double build_ms = 0.0;                  // make_method (e.g. Level0 build)
+  int frames = 0;
+  double frame_ms_median = 0.0, frame_ms_p95 = 0.0;
+  double lod_ms_median = 0.0;
+  double triangles_median = 0.0;
+  int error_samples = 0;
+  double horizon_mean_px = 0.0;  // mean over samples of each frame's column mean
+  double horizon_max_px = 0.0;   // max over samples
+  double depth_rel_p95 = 0.0;    // median over samples of each frame's p95
+  double depth_rel_max = 0.0;    // max over samples
+  double psnr_db = 0.0;          // from the MSE pooled over every sample
+  double holes_mean = 0.0;       // holes per sampled frame
+  double hole_fraction = 0.0;    // holes / reference terrain pixels, all samples
+  double interior_holes_mean = 0.0;
+  double enclosed_holes_mean = 0.0;  // sky through the surface (cracks), per sampled frame
+  std::optional<double> bound_px_median, bound_px_max;  // nullopt: the method claims no bound
+};
+
+// Where a method's frame time at the target horizon error comes from.
+enum class MatchKind {
+  Measured,      // a point lies at the target: its own time
+  Interpolated,  // the target lies between two neighbouring sweep points
+  AtMost,        // every point is more accurate than the target: its cheapest point's time bounds it
+  NotReached,    // no point is that accurate: more than its most accurate point's time
+};
+
+struct MatchedRow {
+  std::string method;
+  MatchKind kind = MatchKind::Interpolated;
+  double frame_ms = 0.0;
+  // method ms / twolevel ms at the target (how many times faster twolevel is);
+  // nullopt when twolevel's own time at the target is neither measured nor interpolated.
+  std::optional<double> ratio;
+};
+
+// Each method's median frame time at `target_px` mean horizon error: a row at
+// the target gives its own time; otherwise walk the rows in sweep order
+// (least to most accurate) and interpolate linearly in (horizon_mean_px,
+// frame_ms_median) between neighbours that bracket the target (the smallest
+// such time when the curve crosses it more than once).
+std::vector<MatchedRow> match_horizon_error(const std::vector<BenchRow>& rows, double target_px);
+
+// The run's context for results.md.
+struct BenchContext {
+  std::string command_line;
+  std::string scenario_name, scenario_file;
+  std::string gl_renderer, gl_version, cpu, host;
+  std::string terrain;  // e.g. "file.tif (4097x4097 samples, 73.5 x 92.6 m)"
+  int width = 0, height = 0;
+  double fov_y_deg = 0.0;
+  int frames = 0, scenario_frames = 0;
+  double time_step_s = 0.0;
+  std::vector<int> frame_indices;   // the scenario frames rendered
+  std::vector<int> sample_indices;  // of which these were compared with the reference
+  double wall_s = 0.0;
+  bool sweep = false;
+};
+
+void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows);
+// `target_px`: nullopt when there is no target (no twolevel row and no --match-px).
+void write_bench_markdown(const std::string& path, const BenchContext& context, const std::vector<BenchRow>& rows,
+                          std::optional<double> target_px, const std::string& target_source);
+// Returns false (and says why on stderr) when gnuplot is missing or fails.
+bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>& rows,
+                        std::optional<double> target_px, const std::string& title);
+
+}  // namespace ig::app
