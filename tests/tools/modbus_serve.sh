@@ -22,7 +22,12 @@ mbw() {
 read_u32() { mb -t 3:int -B -r "$1" -c 1 -1 2>&1 | sed -n "s/^\[$1\]:[[:space:]]*\([-0-9.]*\).*/\1/p"; }
 read_hold_f32() { mb -t 4:float -B -r "$1" -c 1 -1 2>&1 | sed -n "s/^\[$1\]:[[:space:]]*\([-0-9.e]*\).*/\1/p"; }
 
-"$bin/ig" serve --config "$src/scenarios/default.json" --headless --udp "127.0.0.1:$udp" \
+# The default scenario with the two-level eye guard off: the guard keeps
+# Level1 over a low eye whatever a1/a2 say, and step 2 checks that the written
+# thresholds reach the size controller.
+python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); s["render"].setdefault("twolevel", {})["eye_guard"]=False; json.dump(s, open(sys.argv[2], "w"))' \
+  "$src/scenarios/default.json" "$out/config.json"
+"$bin/ig" serve --config "$out/config.json" --headless --udp "127.0.0.1:$udp" \
   --modbus "127.0.0.1:$port" --seconds 16 --size 160x120 --out "$out/serve" > "$out/serve.log" 2>&1 &
 pid=$!
 for _ in $(seq 1 100); do

@@ -43,6 +43,7 @@ std::vector<std::vector<std::uint8_t>> make_packets(ig::io::Protocol p, int n) {
         out.emplace_back(a.begin(), a.end());
         break;
       }
+      default: break;  // CAN formats: bench_can
     }
   }
   return out;
@@ -65,6 +66,7 @@ int main(int argc, char** argv) {
         case ig::io::Protocol::Native: accepted += ig::io::wire::decode_native(b).ok(); break;
         case ig::io::Protocol::Cigi: accepted += ig::io::wire::decode_cigi_host_datagram(b).ok(); break;
         case ig::io::Protocol::FgNetFdm: accepted += ig::io::wire::decode_fgnetfdm(b).ok(); break;
+        default: break;  // CAN formats: bench_can
       }
     }
     const double decode_ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n;

@@ -71,7 +71,12 @@ class Builder {
   }
   float error_of(const Tri& t) const {
     const glm::ivec2 m = (t.v[1] + t.v[2]) / 2;
-    return eg_.error[static_cast<std::size_t>(m.y) * eg_.side + m.x];
+    float e = eg_.error[static_cast<std::size_t>(m.y) * eg_.side + m.x];
+    if (opts_.earth_radius_m > 0.0) {
+      const glm::dvec2 d = glm::dvec2(t.v[1] - t.v[2]) * glm::dvec2(hf_.spacing_x_m, hf_.spacing_y_m);
+      e += float((d.x * d.x + d.y * d.y) / (8.0 * opts_.earth_radius_m));
+    }
+    return e;
   }
 
  private:

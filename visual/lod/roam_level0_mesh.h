@@ -33,6 +33,11 @@ struct Level0Options {
   int triangle_budget = 2048;
   // Stop once the largest error of any splittable leaf is <= this (metres).
   double error_target_m = 0.0;
+  // Earth radius the scene is drawn with (0 = flat). The drop is applied per
+  // vertex, so a flat triangle with hypotenuse L sags up to L^2 / (8 R) below
+  // the sphere between its vertices: added to each triangle's error so flat
+  // ground (error 0) still refines where the curve needs it.
+  double earth_radius_m = 0.0;
 };
 
 struct Level0Mesh {

@@ -151,7 +151,8 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
       pyramid_(scene.heightfield()),
-      level0_(lod::build_level0_mesh(scene.heightfield(), lod::Level0Options{options.level0_budget, 0.0})),
+      level0_(lod::build_level0_mesh(scene.heightfield(),
+                                     lod::Level0Options{options.level0_budget, 0.0, scene.earth_radius_m()})),
       level0_heights_(level0_, scene.heightfield().width, scene.heightfield().height),
       block_mesh_(kBlockQuads),
       controller_(lod::level1_ladder(scene.heightfield().width, scene.heightfield().height, options.max_level1),
@@ -203,6 +204,40 @@ TwoLevelMethod::SizeMeshes& TwoLevelMethod::meshes_for(int n, int band_w) {
   return *slot;
 }
 
+// Level0 (a few thousand triangles for the whole DEM) is off by up to
+// max_error_m. Seen from a height comparable to that error, the coarse
+// surface beside the eye can pass above the eye or cut through the view:
+// sky through the ground, or a wall of Level0 hiding everything. So while
+// the eye is that low over the DEM, Level1 (exact) must also cover the ground
+// under the eye: its size is raised to the smallest ladder size whose square
+// around E holds the eye with a margin; when even the largest cannot, the
+// square is moved from E towards the eye so it starts just behind the eye.
+void TwoLevelMethod::apply_eye_guard(const Camera& camera, int& n, int& ec_i, int& ec_j) {
+  const auto& hf = scene_.heightfield();
+  const glm::dvec3& p = camera.position;
+  const double ei = p.x / hf.spacing_x_m, ej = p.y / hf.spacing_y_m;
+  if (ei < 0 || ej < 0 || ei > hf.width - 1 || ej > hf.height - 1) return;  // not over the DEM
+  const double agl = p.z - hf.sample_bilinear(p.x, p.y);
+  if (!(agl < kEyeGuardHeightFactor * std::max(level0_.max_error_m, 1.0))) return;
+  const double di = std::fabs(ei - ec_i), dj = std::fabs(ej - ec_j);
+  const int needed = 2 * int(std::ceil(std::max(di, dj))) + 2 * kEyeGuardMarginSamples + 1;
+  const auto& ladder = controller_.ladder();
+  int guarded = ladder.back();
+  for (int size : ladder)
+    if (size >= needed) {
+      guarded = size;
+      break;
+    }
+  eye_guarded_ = guarded > n || needed > ladder.back();
+  n = std::max(n, guarded);
+  if (needed > n) {  // too far for the largest square: start it behind the eye, towards E
+    const double half = 0.5 * (n - 1) - kEyeGuardMarginSamples;
+    const double d = std::max(di, dj);
+    ec_i = int(std::lround(ei + (ec_i - ei) * half / d));
+    ec_j = int(std::lround(ej + (ec_j - ej) * half / d));
+  }
+}
+
 double TwoLevelMethod::read_previous_ratio() {
   // Results of the frame before: never wait for them (no stall); if the
   // driver has not finished, keep the size one more frame.
@@ -226,13 +261,16 @@ void TwoLevelMethod::update(const Camera& camera) {
 
   const double ratio = read_previous_ratio();
   if (ratio >= 0.0) last_ratio_ = ratio;
-  const int n = controller_.update(ratio);
+  int n = controller_.update(ratio);
 
   look_at_ = lod::find_look_at_point(hf, pyramid_, camera.position, camera.forward(), camera.up(),
-                                     options_.fallback_distance_m);
+                                     camera.earth_radius_m);
   // Snap E to a whole sample and keep the square inside the DEM.
-  const int ec_i = int(std::lround(look_at_.point.x / hf.spacing_x_m));
-  const int ec_j = int(std::lround(look_at_.point.y / hf.spacing_y_m));
+  int ec_i = int(std::lround(look_at_.point.x / hf.spacing_x_m));
+  int ec_j = int(std::lround(look_at_.point.y / hf.spacing_y_m));
+  eye_guarded_ = false;
+  if (options_.eye_guard) apply_eye_guard(camera, n, ec_i, ec_j);
+  n_ = n;
   origin_ = {std::clamp(ec_i - (n - 1) / 2, 0, std::max(hf.width - n, 0)),
              std::clamp(ec_j - (n - 1) / 2, 0, std::max(hf.height - n, 0))};
 
@@ -338,7 +376,7 @@ void TwoLevelMethod::classify_level0(int n) {
 
 MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarget& target) {
   const auto& hf = scene_.heightfield();
-  const int n = controller_.size();
+  const int n = n_;
   MethodFrameStats stats;
   long long level1_tris = 0, band_tris = 0, level0_tris = 0;
   std::vector<std::string> passes;
@@ -473,7 +511,7 @@ namespace ig::render {
 
 std::optional<double> TwoLevelMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
   const auto& hf = scene_.heightfield();
-  const int n = controller_.size();
+  const int n = n_;
   const double x0 = origin_.x * hf.spacing_x_m, x1 = (origin_.x + n - 1) * hf.spacing_x_m;
   const double y0 = origin_.y * hf.spacing_y_m, y1 = (origin_.y + n - 1) * hf.spacing_y_m;
   const glm::dvec3& p = camera.position;

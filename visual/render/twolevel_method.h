@@ -29,12 +29,13 @@ namespace ig::render {
 
 struct TwoLevelOptions {
   int level0_budget = 2048;       // Level0 triangles
+  // Level1 also covers the ground under a low eye (see apply_eye_guard).
+  bool eye_guard = true;
   double a1 = 0.50, a2 = 0.80;    // Level1 size thresholds on R
   double alpha = 2000.0;          // band factor: w_trans = (r0 / r1) * alpha * w1
   bool gaussian_beta = false;     // beta template: linear (default) or Gaussian
   int max_level1 = 1025;          // top of the ladder (vertices a side)
   int band_stride = 2;            // band geometry every k samples (it only carries uv)
-  double fallback_distance_m = 20000.0;  // E when the centre ray misses (see look_at_point.h)
 };
 
 class TwoLevelMethod final : public TerrainMethod {
@@ -54,10 +55,12 @@ class TwoLevelMethod final : public TerrainMethod {
   std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
 
   // State of the last update, for tests and logs.
-  int level1_size() const { return controller_.size(); }
+  // This frame's Level1 size: the controller's, or larger under the eye guard.
+  int level1_size() const { return n_ > 0 ? n_ : controller_.size(); }
   const lod::LookAtPoint& look_at() const { return look_at_; }
   glm::ivec2 level1_origin() const { return origin_; }
   double last_ratio() const { return last_ratio_; }
+  bool eye_guarded() const { return eye_guarded_; }
   const lod::Level0Mesh& level0() const { return level0_; }
   int band_width_samples() const { return band_w_; }
   void set_thresholds(double a1, double a2) { controller_.set_thresholds(a1, a2); }
@@ -91,6 +94,13 @@ class TwoLevelMethod final : public TerrainMethod {
   glm::ivec2 origin_{0};
   int band_w_ = 0;
   double last_ratio_ = -1.0;
+  bool eye_guarded_ = false;
+  int n_ = 0;  // Level1 vertices a side used this frame  // this frame's Level1 size / centre came from the eye guard
+  // The guard acts while the eye is below this many times Level0's max error
+  // above the ground, and keeps the eye this many samples inside Level1.
+  static constexpr double kEyeGuardHeightFactor = 10.0;
+  static constexpr int kEyeGuardMarginSamples = 32;
+  void apply_eye_guard(const Camera& camera, int& n, int& ec_i, int& ec_j);
   bool terrain_visible_ = false, band_visible_ = false;
   std::vector<glm::ivec2> visible_blocks_;
 
