@@ -220,9 +220,15 @@ bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>
       gp << "set arrow from graph 0, first " << num(*target_px) << " to graph 1, first " << num(*target_px)
          << " nohead dt 2 lc rgb 'gray40'\n";
     gp << "plot ";
+    // gnuplot's default colours repeat after a few curves: one colour and
+    // point shape per method so seven curves stay apart.
+    static constexpr const char* kColours[] = {"#d62728", "#7f7f7f", "#1f77b4", "#2ca02c",
+                                               "#ff7f0e", "#9467bd", "#17becf", "#8c564b"};
+    static constexpr int kPoints[] = {7, 6, 5, 9, 11, 13, 4, 8};
     for (size_t m = 0; m < methods.size(); ++m)
-      gp << (m ? ", " : "") << "$m" << m << " using 1:2 with linespoints lw 2 pt 7 title '" << methods[m].first
-         << "', $m" << m << " using 1:2:3 with labels offset char 0.8,0.6 font ',8' notitle";
+      gp << (m ? ", " : "") << "$m" << m << " using 1:2 with linespoints lw 2 lc rgb '" << kColours[m % 8]
+         << "' pt " << kPoints[m % 8] << " title '" << methods[m].first << "', $m" << m
+         << " using 1:2:3 with labels offset char 0.8,0.6 font ',8' notitle";
     // The matched-error target across the whole width (an arrow), with a key entry (NaN plots nothing).
     if (target_px && (*target_px > 0.0 || !all_positive))
       gp << ", NaN with lines dt 2 lc rgb 'gray40' title 'matched error " << fmt("%.3f", *target_px) << " px'";
