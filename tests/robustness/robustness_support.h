@@ -142,11 +142,15 @@ inline std::string finite_problems(const Frame& f) {
 // owned here so the scene's reference to it stays valid.
 class Rig {
  public:
+  // earth_radius_m is set on the scene before the method is made (as
+  // ScenarioRunner does): methods that build meshes at construction see it.
   Rig(ig::terrain::Heightfield hf, const std::string& method, int w = 160, int h = 120,
-      ig::render::ShadingParams shading = {}, ig::render::TwoLevelOptions twolevel = {})
+      ig::render::ShadingParams shading = {}, ig::render::TwoLevelOptions twolevel = {},
+      double earth_radius_m = 0.0)
       : hf_(std::make_unique<ig::terrain::Heightfield>(std::move(hf))) {
     ensure_gl();
     scene_ = std::make_unique<ig::render::TerrainScene>(*hf_, shading);
+    scene_->set_earth_radius(earth_radius_m);
     method_ = ig::render::make_method(method, *scene_, shader_dir(), twolevel);
     renderer_ = std::make_unique<ig::render::FrameRenderer>(*scene_, *method_, shader_dir());
     target_ = std::make_unique<ig::gl::RenderTarget>(w, h);
