@@ -162,11 +162,13 @@ TEST(EarthCurvature, FlatDemDrawsTheSphereInEveryMethod) {
       EXPECT_LT(worst, 1e-3);
       EXPECT_LE(horizon_err, 1.0);
     }
-    if (method == "twolevel") {
-      // Level0's error includes each triangle's curvature sag L^2/8R, so on a
-      // flat DEM it still refines (measured p95 6.5e-4; 0.73 without the sag).
+    if (method == "twolevel" || method == "roam") {
+      // ROAM meshes (Level0, the roam baseline) count each triangle's
+      // curvature sag L^2/8R in its error, so on a flat DEM they still refine.
+      // Measured p95: twolevel 6.5e-4, roam 0.030 (its 2 px tolerance seen
+      // at grazing angles); 0.73 / 0.90 without the sag.
       EXPECT_LE(wrong_kind, kW);
-      EXPECT_LT(p95, 0.01);
+      EXPECT_LT(p95, method == "roam" ? 0.06 : 0.01);
     }
   }
 }

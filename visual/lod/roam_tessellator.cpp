@@ -17,8 +17,9 @@ void replace_link(int& a, int& b, int& c, int from, int to) {
 
 }  // namespace
 
-RoamTessellator::RoamTessellator(const terrain::Heightfield& hf)
-    : hf_(hf), grid_(make_patch_grid(hf.width, hf.height)), heights_(hf) {
+RoamTessellator::RoamTessellator(const terrain::Heightfield& hf, double earth_radius_m)
+    : hf_(hf), grid_(make_patch_grid(hf.width, hf.height)), heights_(hf),
+      earth_radius_m_(earth_radius_m > 0.0 && std::isfinite(earth_radius_m) ? earth_radius_m : 0.0) {
   if (hf.heights.size() != std::size_t(hf.width) * std::size_t(hf.height))
     throw std::invalid_argument("roam: heightfield has " + std::to_string(hf.heights.size()) +
                                 " heights for " + std::to_string(hf.width) + " x " + std::to_string(hf.height));
@@ -47,7 +48,11 @@ void RoamTessellator::evaluate(Tri& t) const {
   const glm::ivec2 a(t.v[0]), b(t.v[1]), c(t.v[2]);
   const glm::ivec2 mn = glm::min(a, glm::min(b, c)), mx = glm::max(a, glm::max(b, c));
   const bool crossing = grid_.crosses_edge(mx.x, mx.y);
-  const double e = double(error_of(t)) * (crossing ? 2.0 : 1.0);
+  double e = double(error_of(t)) * (crossing ? 2.0 : 1.0);
+  if (earth_radius_m_ > 0.0) {
+    const glm::dvec2 h = glm::dvec2(glm::ivec2(t.v[1]) - glm::ivec2(t.v[2])) * glm::dvec2(hf_.spacing_x_m, hf_.spacing_y_m);
+    e += (h.x * h.x + h.y * h.y) / (8.0 * earth_radius_m_);
+  }
   const float h0 = heights_(a.x, a.y), h1 = heights_(b.x, b.y), h2 = heights_(c.x, c.y);
   const glm::dvec3 lo(mn.x * hf_.spacing_x_m, mn.y * hf_.spacing_y_m, std::min({h0, h1, h2}) - e);
   const glm::dvec3 hi(std::min(mx.x, grid_.lim_x) * hf_.spacing_x_m, std::min(mx.y, grid_.lim_y) * hf_.spacing_y_m,

@@ -49,7 +49,10 @@ class RoamTessellator {
  public:
   // Throws std::invalid_argument for grids smaller than 2 x 2 or wider or
   // taller than 65536 samples (vertices are 16-bit sample indices).
-  explicit RoamTessellator(const terrain::Heightfield& hf);
+  // earth_radius_m > 0: the scene is drawn curved; the drop is applied per
+  // vertex, so each triangle's error also counts its sag L^2 / (8 R) (L its
+  // hypotenuse), else flat ground would never refine.
+  explicit RoamTessellator(const terrain::Heightfield& hf, double earth_radius_m = 0.0);
 
   // Rebuilds the mesh for an eye at `eye` (terrain-local metres). tau_px >= 0.
   // Distances below min_distance_m (the near plane) count as that, so the
@@ -90,6 +93,7 @@ class RoamTessellator {
   glm::dvec3 eye_{0.0};
   double threshold_ = 0.0;  // split when ratio > threshold_ (= tau / pixels per radian)
   double min_distance_ = 0.5;
+  double earth_radius_m_ = 0.0;
   const BoxInView* in_view_ = nullptr;
   std::vector<Tri> tris_;
   std::vector<glm::u16vec2> out_;
