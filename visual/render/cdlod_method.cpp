@@ -17,7 +17,8 @@ CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_di
     : scene_(scene),
       lod0_range_(lod0_range),
       program_(shader_dir, "cdlod.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
-      tree_(scene.heightfield()) {
+      tree_(scene.heightfield()),
+      mesh_(Q) {
   if (!(lod0_range > 0.0) || !std::isfinite(lod0_range))
     throw std::invalid_argument("cdlod: lod0_range must be a positive number of samples, got " +
                                 std::to_string(lod0_range));
@@ -35,34 +36,6 @@ CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_di
                                       n.stride);
     quadrant_triangles_.push_back(t);
   }
-
-  std::vector<std::int16_t> verts;
-  for (int j = 0; j <= Q; ++j)
-    for (int i = 0; i <= Q; ++i) verts.insert(verts.end(), {std::int16_t(i), std::int16_t(j)});
-  // Indices quarter by quarter (child order), so a quarter is one range.
-  std::vector<std::uint16_t> idx;
-  auto v = [](int i, int j) { return std::uint16_t(j * (Q + 1) + i); };
-  for (int q = 0; q < 4; ++q)
-    for (int j = (q >> 1) * Q / 2; j < ((q >> 1) + 1) * Q / 2; ++j)
-      for (int i = (q & 1) * Q / 2; i < ((q & 1) + 1) * Q / 2; ++i)
-        idx.insert(idx.end(), {v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j), v(i + 1, j + 1), v(i, j + 1)});
-  quadrant_indices_ = GLsizei(idx.size() / 4);
-  glCreateBuffers(1, &vbo_);
-  glNamedBufferStorage(vbo_, GLsizeiptr(verts.size() * sizeof(verts[0])), verts.data(), 0);
-  glCreateBuffers(1, &ibo_);
-  glNamedBufferStorage(ibo_, GLsizeiptr(idx.size() * sizeof(idx[0])), idx.data(), 0);
-  glCreateVertexArrays(1, &vao_);
-  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 2 * sizeof(std::int16_t));
-  glVertexArrayElementBuffer(vao_, ibo_);
-  glEnableVertexArrayAttrib(vao_, 0);
-  glVertexArrayAttribIFormat(vao_, 0, 2, GL_SHORT, 0);
-  glVertexArrayAttribBinding(vao_, 0, 0);
-}
-
-CdlodMethod::~CdlodMethod() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vbo_);
-  glDeleteBuffers(1, &ibo_);
 }
 
 std::vector<std::string> CdlodMethod::column_names() const {
@@ -100,17 +73,15 @@ MethodFrameStats CdlodMethod::draw(const Camera& camera, const gl::RenderTarget&
                                          float(camera.position.y - eye_sample.y * hf.spacing_y_m),
                                          float(camera.position.z)));
     const GLint loc_origin = program_.location("u_origin"), loc_lod = program_.location("u_lod");
-    glBindVertexArray(vao_);
     for (const lod::CdlodArea& a : areas_) {
       const lod::ChunkNode& n = tree_.node(a.node);
       glProgramUniform2i(program_.id(), loc_origin, n.i0, n.j0);
       glProgramUniform1i(program_.id(), loc_lod, a.lod);
       if (a.quadrant < 0) {
-        glDrawElements(GL_TRIANGLES, 4 * quadrant_indices_, GL_UNSIGNED_SHORT, nullptr);
+        mesh_.draw();
         stats.triangles += n.triangles;
       } else {
-        const size_t offset = size_t(a.quadrant) * size_t(quadrant_indices_) * sizeof(std::uint16_t);
-        glDrawElements(GL_TRIANGLES, quadrant_indices_, GL_UNSIGNED_SHORT, reinterpret_cast<const void*>(offset));
+        mesh_.draw_quadrant(a.quadrant);
         stats.triangles += quadrant_triangles_[size_t(a.node)][size_t(a.quadrant)];
         ++quarters;
       }

@@ -19,6 +19,7 @@
 #include "gl/shader_program.h"
 #include "lod/cdlod_selection.h"
 #include "lod/chunk_quadtree.h"
+#include "render/grid_mesh.h"
 #include "render/terrain_method.h"
 
 namespace ig::render {
@@ -27,7 +28,6 @@ class CdlodMethod final : public TerrainMethod {
  public:
   static constexpr double kDefaultLod0Range = 128.0;  // sample spacings
   CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range = kDefaultLod0Range);
-  ~CdlodMethod() override;
   CdlodMethod(const CdlodMethod&) = delete;
   CdlodMethod& operator=(const CdlodMethod&) = delete;
 
@@ -54,8 +54,7 @@ class CdlodMethod final : public TerrainMethod {
   lod::ChunkQuadtree tree_;
   lod::CdlodRanges ranges_;
   std::vector<std::array<int, 4>> quadrant_triangles_;  // per node
-  GLuint vao_ = 0, vbo_ = 0, ibo_ = 0;
-  GLsizei quadrant_indices_ = 0;  // indices per quarter; the whole grid is the four in a row
+  GridMesh mesh_;  // the one Q x Q grid, drawn whole or a quarter at a time
   std::vector<lod::CdlodArea> areas_;
 };
 

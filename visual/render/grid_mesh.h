@@ -20,6 +20,8 @@ class GridMesh {
   GLsizei index_count() const { return index_count_; }
   // Draw the whole grid (the caller has set the program and its uniforms).
   void draw() const;
+  // Draw one quarter, q = 0 SW, 1 SE, 2 NW, 3 NE (n even only).
+  void draw_quadrant(int q) const;
 
  private:
   int n_;
