@@ -59,6 +59,9 @@ TEST(Channels, EachChannelHasItsOwnLodState) {
   const auto* centre = dynamic_cast<ig::render::TwoLevelMethod*>(ch[1].method.get());
   ASSERT_TRUE(left && centre);
   EXPECT_GT(glm::length(left->look_at().point - centre->look_at().point), 100.0);
+  // ... but the view-independent height pyramid is built once and shared.
+  EXPECT_EQ(&left->pyramid(), &centre->pyramid());
+  EXPECT_EQ(&left->pyramid(), &runner.scene().height_pyramid());
 }
 
 }  // namespace

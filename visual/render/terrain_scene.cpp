@@ -92,4 +92,9 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
   p.set("u_alpha", 1.0f);
 }
 
+const terrain::HeightPyramid& TerrainScene::height_pyramid() const {
+  if (!pyramid_) pyramid_ = std::make_unique<terrain::HeightPyramid>(heightfield_);
+  return *pyramid_;
+}
+
 }  // namespace ig::render

@@ -19,6 +19,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -26,6 +27,7 @@
 
 #include "gl/shader_program.h"
 #include "render/camera.h"
+#include "terrain/height_pyramid.h"
 #include "terrain/heightfield.h"
 
 namespace ig::render {
@@ -55,6 +57,10 @@ class TerrainScene {
   GLuint height_texture() const { return height_tex_; }
   bool has_imagery() const { return imagery_tex_ != 0; }
   double upload_ms() const { return upload_ms_; }
+  // The min/max pyramid of the heightfield (ray casts, culling bounds),
+  // built on first use and shared by every method and channel on this scene:
+  // it is view-independent and large (180 MB for a 4097^2 DEM).
+  const terrain::HeightPyramid& height_pyramid() const;
 
   // World position of sample (0, 0) at height 0 (default: the origin).
   const glm::dvec3& world_origin() const { return world_origin_; }
@@ -78,6 +84,7 @@ class TerrainScene {
   GLuint height_tex_ = 0;
   GLuint imagery_tex_ = 0;
   double upload_ms_ = 0.0;
+  mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   glm::dvec3 world_origin_{0.0};
   double earth_radius_m_ = 0.0;
 };

@@ -150,7 +150,7 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
                               std::vector<std::string>{"terrain_shading.frag", "level0_blend.frag", "level0_clipped.frag"}),
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
-      pyramid_(scene.heightfield()),
+      pyramid_(scene.height_pyramid()),
       level0_(lod::build_level0_mesh(scene.heightfield(),
                                      lod::Level0Options{options.level0_budget, 0.0, scene.earth_radius_m()})),
       level0_heights_(level0_, scene.heightfield().width, scene.heightfield().height),

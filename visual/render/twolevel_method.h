@@ -61,6 +61,7 @@ class TwoLevelMethod final : public TerrainMethod {
   glm::ivec2 level1_origin() const { return origin_; }
   double last_ratio() const { return last_ratio_; }
   bool eye_guarded() const { return eye_guarded_; }
+  const terrain::HeightPyramid& pyramid() const { return pyramid_; }
   const lod::Level0Mesh& level0() const { return level0_; }
   int band_width_samples() const { return band_w_; }
   void set_thresholds(double a1, double a2) { controller_.set_thresholds(a1, a2); }
@@ -76,7 +77,7 @@ class TwoLevelMethod final : public TerrainMethod {
   const TerrainScene& scene_;
   TwoLevelOptions options_;
   gl::ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_, count_program_;
-  terrain::HeightPyramid pyramid_;
+  const terrain::HeightPyramid& pyramid_;  // the scene's, shared across channels
   lod::Level0Mesh level0_;
   lod::Level0HeightQuery level0_heights_;
   GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
