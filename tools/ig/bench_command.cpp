@@ -242,13 +242,9 @@ std::string label_of(const Variant& v, const render::TerrainMethod& m) {
 }  // namespace
 
 int run_bench_command(const std::vector<std::string>& argv) {
-  Args args;
-  try {
-    args = parse_args(argv);
-  } catch (const UsageError& e) {
-    std::cerr << "ig bench: " << e.what() << "\n" << kUsage;
-    return 2;
-  }
+  const auto parsed = parse_or_usage("ig bench", kUsage, parse_args, argv);
+  if (!parsed) return 2;
+  const Args& args = *parsed;
   const auto start = Clock::now();
   try {
     io::Scenario scenario = io::load_scenario(args.scenario);

@@ -2,6 +2,8 @@
 // Small helpers shared by the subcommands' argument parsing: one place for
 // value checks and their error messages.
 
+#include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,6 +13,19 @@ namespace ig::app {
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// A subcommand's argument parsing: the parsed arguments, or nullopt after
+// printing "COMMAND: reason" and the usage text (the caller exits with 2).
+template <class Parse>
+auto parse_or_usage(const char* command, const char* usage, Parse parse, const std::vector<std::string>& argv)
+    -> std::optional<decltype(parse(argv))> {
+  try {
+    return parse(argv);
+  } catch (const UsageError& e) {
+    std::cerr << command << ": " << e.what() << "\n" << usage;
+    return std::nullopt;
+  }
+}
 
 class ArgReader {
  public:

@@ -72,13 +72,9 @@ Args parse_args(const std::vector<std::string>& a) {
 }  // namespace
 
 int run_run_command(const std::vector<std::string>& argv) {
-  Args args;
-  try {
-    args = parse_args(argv);
-  } catch (const UsageError& e) {
-    std::cerr << "ig run: " << e.what() << "\n" << kUsage;
-    return 2;
-  }
+  const auto parsed = parse_or_usage("ig run", kUsage, parse_args, argv);
+  if (!parsed) return 2;
+  const Args& args = *parsed;
   try {
     io::Scenario scenario = io::load_scenario(args.scenario);
     namespace fs = std::filesystem;

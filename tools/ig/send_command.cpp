@@ -131,13 +131,9 @@ struct Packet {
 }  // namespace
 
 int run_send_command(const std::vector<std::string>& argv) {
-  Args args;
-  try {
-    args = parse_args(argv);
-  } catch (const UsageError& e) {
-    std::cerr << "ig send: " << e.what() << "\n" << kUsage;
-    return 2;
-  }
+  const auto parsed = parse_or_usage("ig send", kUsage, parse_args, argv);
+  if (!parsed) return 2;
+  const Args& args = *parsed;
   try {
     const io::Scenario scenario = io::load_scenario(args.scenario);
     const terrain::Heightfield hf = load_terrain(scenario.terrain);

@@ -263,13 +263,9 @@ class ModbusLink {
 }  // namespace
 
 int run_serve_command(const std::vector<std::string>& argv) {
-  Args args;
-  try {
-    args = parse_args(argv);
-  } catch (const UsageError& e) {
-    std::cerr << "ig serve: " << e.what() << "\n" << kUsage;
-    return 2;
-  }
+  const auto parsed = parse_or_usage("ig serve", kUsage, parse_args, argv);
+  if (!parsed) return 2;
+  const Args& args = *parsed;
   try {
     const std::string config = args.config.empty() ? std::string(IG_SOURCE_DIR) + "/scenarios/default.json" : args.config;
     io::Scenario scenario = io::load_scenario(config);
