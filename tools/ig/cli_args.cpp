@@ -1,6 +1,7 @@
 #include "cli_args.h"
 
 #include <cmath>
+#include <cstdlib>
 
 namespace ig::app {
 
@@ -35,6 +36,21 @@ const std::string& ArgReader::value(const std::string& flag) {
 }
 
 int ArgReader::positive_int(const std::string& flag) { return parse_positive_int(flag, value(flag)); }
+
+int ArgReader::can_node(const std::string& flag) {
+  const std::string& v = value(flag);
+  char* end = nullptr;
+  const long n = std::strtol(v.c_str(), &end, 10);
+  if (v.empty() || *end || n < 0 || n > 255) throw UsageError(flag + ": expected 0..255, got '" + v + "'");
+  return int(n);
+}
+
+int ArgReader::can_altitude_id(const std::string& flag) {
+  const int id = positive_int(flag);
+  if (id != 320 && id != 322 && id != 332)
+    throw UsageError(flag + ": expected 320, 322 or 332, got " + std::to_string(id));
+  return id;
+}
 
 double ArgReader::positive_double(const std::string& flag) {
   const double d = parse_double(flag, value(flag));

@@ -37,6 +37,10 @@ class ArgReader {
   int positive_int(const std::string& flag);
   double positive_double(const std::string& flag);
   double probability(const std::string& flag);  // [0, 1]
+  // CAN options shared by ig serve and ig send: a node id 0..255, and the
+  // CANaerospace altitude id 320, 322 or 332.
+  int can_node(const std::string& flag);
+  int can_altitude_id(const std::string& flag);
   // "WxH" into width/height.
   void size(const std::string& flag, int& width, int& height);
 

@@ -90,14 +90,9 @@ Args parse_args(const std::vector<std::string>& a) {
     else if (f == "--can") args.can = r.value(f);
     else if (f == "--can-fd") args.can_fd = true;
     else if (f == "--can-float-position") args.can_float_position = true;
-    else if (f == "--can-node") {
-      args.can_node = r.positive_int(f);
-      if (args.can_node > 255) throw UsageError("--can-node: expected 1..255");
-    } else if (f == "--can-altitude") {
-      args.can_altitude = r.positive_int(f);
-      if (args.can_altitude != 320 && args.can_altitude != 322 && args.can_altitude != 332)
-        throw UsageError("--can-altitude: expected 320, 322 or 332");
-    } else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
+    else if (f == "--can-node") args.can_node = r.can_node(f);
+    else if (f == "--can-altitude") args.can_altitude = r.can_altitude_id(f);
+    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
     else if (args.scenario.empty()) args.scenario = f;
     else throw UsageError("unexpected argument " + f);
   }

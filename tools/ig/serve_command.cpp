@@ -84,17 +84,9 @@ Args parse_args(const std::vector<std::string>& a) {
     else if (f == "--record") args.record = r.value(f);
     else if (f == "--modbus") args.modbus = r.value(f);
     else if (f == "--can") args.can = r.value(f);
-    else if (f == "--can-altitude") {
-      args.can_altitude = r.positive_int(f);
-      if (args.can_altitude != 320 && args.can_altitude != 322 && args.can_altitude != 332)
-        throw UsageError("--can-altitude: expected 320, 322 or 332, got " + std::to_string(args.can_altitude));
-    } else if (f == "--can-node") {
-      const std::string v = r.value(f);
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end || n < 0 || n > 255) throw UsageError("--can-node: expected 0..255, got '" + v + "'");
-      args.can_node = int(n);
-    } else if (f == "--can-max-age-ms") args.can_max_age_ms = r.positive_double(f);
+    else if (f == "--can-altitude") args.can_altitude = r.can_altitude_id(f);
+    else if (f == "--can-node") args.can_node = r.can_node(f);
+    else if (f == "--can-max-age-ms") args.can_max_age_ms = r.positive_double(f);
     else if (f == "--out") args.out_dir = r.value(f);
     else if (f == "--frames") args.frames = r.positive_int(f);
     else if (f == "--seconds") args.seconds = r.positive_double(f);
