@@ -28,7 +28,28 @@ bool finite_sample(const PoseSample& s) {
 
 }  // namespace
 
-PoseFilter::PoseFilter(const PoseFilterOptions& options) : opt_(options) {
+const char* latency_mode_name(LatencyMode m) {
+  switch (m) {
+    case LatencyMode::Smooth: return "smooth";
+    case LatencyMode::Latest: return "latest";
+    case LatencyMode::Synchronous: return "sync";
+  }
+  return "smooth";
+}
+
+std::optional<LatencyMode> parse_latency_mode(const std::string& text) {
+  for (LatencyMode m : {LatencyMode::Smooth, LatencyMode::Latest, LatencyMode::Synchronous})
+    if (text == latency_mode_name(m)) return m;
+  return std::nullopt;
+}
+
+PoseFilter::PoseFilter(const PoseFilterOptions& options)
+    : opt_(options), sender_clock_([&] {
+        SenderClockOptions c = options.sender_clock;
+        if (std::isfinite(options.nominal_interval_s) && options.nominal_interval_s > 0.0)
+          c.nominal_interval_s = options.nominal_interval_s;
+        return c;
+      }()) {
   // Sanitize the knobs so that nothing below can divide by zero or go NaN.
   auto fin = [](double v, double dflt) { return std::isfinite(v) ? v : dflt; };
   opt_.playout_intervals = std::max(0.0, fin(opt_.playout_intervals, 2.0));
@@ -42,6 +63,10 @@ PoseFilter::PoseFilter(const PoseFilterOptions& options) : opt_(options) {
   opt_.clock_slew = std::clamp(fin(opt_.clock_slew, 0.1), 0.0, 0.9);
   opt_.clock_snap_s = std::max(0.0, fin(opt_.clock_snap_s, 0.25));
   opt_.max_extrapolation_s = std::max(0.0, fin(opt_.max_extrapolation_s, 0.2));
+  opt_.max_extrapolation_m = std::max(0.0, fin(opt_.max_extrapolation_m, 100.0));
+  opt_.min_derive_step_fraction = std::max(0.0, fin(opt_.min_derive_step_fraction, 0.5));
+  if (!(opt_.max_speed_mps > 0.0)) opt_.max_speed_mps = 1000.0;
+  if (!(opt_.max_angular_rate_dps > 0.0)) opt_.max_angular_rate_dps = 1000.0;
   if (!(opt_.time_jump_s > 0.0)) opt_.time_jump_s = 1.0;
   if (!(opt_.clock_step_s > 0.0) || !std::isfinite(opt_.clock_step_s)) opt_.clock_step_s = 0.25;
   opt_.reorder_window = std::max<std::uint32_t>(1, std::min<std::uint32_t>(opt_.reorder_window, 0x7fffffffu));
@@ -50,6 +75,11 @@ PoseFilter::PoseFilter(const PoseFilterOptions& options) : opt_(options) {
 }
 
 void PoseFilter::reset() {
+  clear_stream();
+  sender_clock_.reset();
+}
+
+void PoseFilter::clear_stream() {
   head_ = count_ = 0;
   off_next_ = off_count_ = 0;
   offset_ = jitter_ = 0.0;
@@ -98,7 +128,7 @@ bool PoseFilter::seen(std::uint32_t seq, double t) const {
 }
 
 void PoseFilter::restart(const Entry& e) {
-  reset();
+  clear_stream();
   at(0) = e;
   count_ = 1;
   newest_seq_ = e.seq;
@@ -155,7 +185,10 @@ bool PoseFilter::push(const PoseSample& s) {
     return false;
   }
   Entry e;
-  e.t = s.sender_time_s ? *s.sender_time_s : s.receive_time_s;
+  // Without a sender clock: the de-jittered estimate of when it was sent.
+  if (s.sender_time_s) e.t = *s.sender_time_s;
+  else if (opt_.dejitter_receive_times) e.t = sender_clock_.stamp(s.receive_time_s, s.sequence);
+  else e.t = s.receive_time_s;
   e.recv = s.receive_time_s;
   e.seq = s.sequence.value_or(0);
   e.pos = s.position;
@@ -181,6 +214,10 @@ bool PoseFilter::push(const PoseSample& s) {
   if (has_sender != stream_has_sender_ || has_seq != stream_has_seq_) {
     // The time base or numbering changed: a different sender. Start over.
     ++counters_.time_jumps;
+    if (!has_sender && opt_.dejitter_receive_times) {
+      sender_clock_.reset();
+      e.t = sender_clock_.stamp(s.receive_time_s, s.sequence);
+    }
     stream_has_sender_ = has_sender;
     stream_has_seq_ = has_seq;
     restart(e);
@@ -270,24 +307,42 @@ bool PoseFilter::push(const PoseSample& s) {
   return true;
 }
 
-glm::dvec3 PoseFilter::extrap_velocity() const {
+glm::dvec3 PoseFilter::clamp_velocity(glm::dvec3 v) {
+  const double len = glm::length(v);
+  if (len <= opt_.max_speed_mps) return v;
+  ++counters_.clamped_rates;
+  return v * (opt_.max_speed_mps / len);
+}
+
+glm::dvec3 PoseFilter::clamp_omega(glm::dvec3 w) {
+  const double len = glm::length(w), limit = opt_.max_angular_rate_dps * kDegToRad;
+  if (len <= limit) return w;
+  ++counters_.clamped_rates;
+  return w * (limit / len);
+}
+
+// Differencing: the step is floored at a fraction of the packet interval (two
+// poses stamped microseconds apart must not make a huge velocity) and the
+// result clamped to physical limits.
+glm::dvec3 PoseFilter::extrap_velocity() {
   const Entry& n = at(count_ - 1);
   if (n.has_vel) return n.vel;
   if (!opt_.derive_missing_rates || count_ < 2) return glm::dvec3(0.0);
   const Entry& p = at(count_ - 2);
   const double h = n.t - p.t;
   if (!(h > 0.0) || h > kMaxDiffGapS) return glm::dvec3(0.0);
-  return (n.pos - p.pos) / h;
+  return clamp_velocity((n.pos - p.pos) / std::max(h, opt_.min_derive_step_fraction * interval_));
 }
 
-glm::dvec3 PoseFilter::extrap_omega() const {
+glm::dvec3 PoseFilter::extrap_omega() {
   const Entry& n = at(count_ - 1);
   if (n.has_omega) return n.omega;
   if (!opt_.derive_missing_rates || count_ < 2) return glm::dvec3(0.0);
   const Entry& p = at(count_ - 2);
   const double h = n.t - p.t;
   if (!(h > 0.0) || h > kMaxDiffGapS) return glm::dvec3(0.0);
-  return quat::log_rotvec(glm::conjugate(p.att) * n.att) / h;  // body frame
+  return clamp_omega(quat::log_rotvec(glm::conjugate(p.att) * n.att) /
+                     std::max(h, opt_.min_derive_step_fraction * interval_));  // body frame
 }
 
 FilteredPose PoseFilter::interpolate(const Entry& a, const Entry& b, double tau) const {
@@ -331,7 +386,7 @@ FilteredPose PoseFilter::interpolate(const Entry& a, const Entry& b, double tau)
   return out;
 }
 
-std::optional<FilteredPose> PoseFilter::sample(double now_s) {
+std::optional<FilteredPose> PoseFilter::sample(double now_s, double display_lead_s) {
   if (count_ == 0) return std::nullopt;
   if (!std::isfinite(now_s)) now_s = clock_init_ ? last_now_ : at(count_ - 1).recv;
 
@@ -353,7 +408,17 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s) {
   // The rendered timeline never runs backwards: when the playout point would
   // move back (the IG clock stepped back, or the offset estimate rose by more
   // than clock_snap_s), hold the last instant until it catches up.
-  const double tau = std::max(now_s - budget_, last_tau_);
+  const Entry& newest_entry = at(count_ - 1);
+  if (!std::isfinite(display_lead_s) || display_lead_s < 0.0) display_lead_s = 0.0;
+  double want = now_s - budget_;  // Smooth: a playout delay behind
+  if (opt_.latency == LatencyMode::Latest) {
+    // The sender's instant when this frame reaches the screen: the receive
+    // clock maps to the sender's through the (min-filtered) offset.
+    want = std::max(newest_entry.t, now_s + display_lead_s - offset_);
+  } else if (opt_.latency == LatencyMode::Synchronous) {
+    want = newest_entry.t;  // exactly the newest pose the host sent
+  }
+  const double tau = std::max(want, last_tau_);
 
   FilteredPose out;
   const Entry& oldest = at(0);
@@ -372,7 +437,13 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s) {
   } else {
     const double dt = tau - newest.t;
     const double de = std::min(dt, opt_.max_extrapolation_s);
-    out.position = newest.pos + extrap_velocity() * de;
+    glm::dvec3 step = extrap_velocity() * de;
+    const double dist = glm::length(step);
+    if (dist > opt_.max_extrapolation_m) {
+      step *= opt_.max_extrapolation_m / dist;
+      ++counters_.clamped_extrapolations;
+    }
+    out.position = newest.pos + step;
     out.attitude = glm::normalize(newest.att * quat::exp_rotvec(extrap_omega() * de));
     out.mode = dt <= opt_.max_extrapolation_s ? FilteredPose::Extrapolating : FilteredPose::Holding;
     out.age_s = now_s - newest.recv;

@@ -26,15 +26,30 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
+#include "io/filter/sender_clock.h"
+
 namespace ig::io {
+
+// How the filter trades latency for smoothness (docs/pose-filter.md):
+//  Smooth      interpolate a playout delay behind the newest data; the delay
+//              adapts to the measured packet interval and jitter;
+//  Latest      the newest pose extrapolated to the frame's expected display
+//              time: minimum latency, arrival jitter shows as small errors;
+//  Synchronous the newest pose as received, no extrapolation (CIGI
+//              synchronous operation: one IG frame per host frame).
+enum class LatencyMode : std::uint8_t { Smooth = 0, Latest = 1, Synchronous = 2 };
+const char* latency_mode_name(LatencyMode m);  // "smooth", "latest", "sync"
+std::optional<LatencyMode> parse_latency_mode(const std::string& text);  // the names above
 
 struct PoseSample {
   // IG clock (the clock sample() is called with), seconds, when the packet
-  // was received. Should be taken per packet, not per frame poll.
+  // was received. Must be taken per datagram (kernel timestamp), never once
+  // per frame poll.
   double receive_time_s = 0.0;
   // Sender's clock, seconds, when the pose was valid. Strongly recommended:
-  // without it packets are placed at their receive time (jitter shows up as
-  // motion error) and clock jumps cannot be detected.
+  // without it the filter stamps packets with a de-jittered estimate of the
+  // sender's send times (io/filter/sender_clock.h), which removes arrival
+  // jitter for periodic senders but cannot see the host's own irregularity.
   std::optional<double> sender_time_s;
   // Packet counter, incremented by one per packet sent; wraps at 2^32.
   std::optional<std::uint32_t> sequence;
@@ -81,17 +96,22 @@ struct PoseFilterCounters {
   std::uint64_t sequence_resets = 0;  // sequence restarted (jumped back > reorder_window)
   std::uint64_t extrapolations = 0;  // sample() outputs in mode Extrapolating
   std::uint64_t holds = 0;           // sample() outputs in mode Holding
+  std::uint64_t clamped_rates = 0;   // derived velocity / rate above the physical limits: clamped
+  std::uint64_t clamped_extrapolations = 0;  // extrapolation cut at max_extrapolation_m
 };
 
 struct PoseFilterOptions {
+  LatencyMode latency = LatencyMode::Smooth;
   // Playout delay: >= 0 fixes it (seconds); negative (default) adapts it to
   //   playout_intervals * packet interval + jitter_factor * jitter,
   // clamped to [min_playout_delay_s, max_playout_delay_s]. The packet
   // interval is estimated from sender time deltas per sequence step; jitter
   // is the spread (max - min) of receive-minus-sender time over
   // offset_window_s.
+  // One interval plus the jitter is what interpolation needs: the next
+  // packet is at most one interval plus its extra delay away.
   double playout_delay_s = -1.0;
-  double playout_intervals = 2.0;
+  double playout_intervals = 1.0;
   double jitter_factor = 1.0;
   double min_playout_delay_s = 0.0;
   double max_playout_delay_s = 0.100;
@@ -104,8 +124,20 @@ struct PoseFilterOptions {
   // runs at 1 +- clock_slew), unless they differ by more than clock_snap_s.
   double clock_slew = 0.1;
   double clock_snap_s = 0.25;
-  // Extrapolate at most this far past the newest sample, then hold.
+  // Extrapolate at most this far past the newest sample (in time and in
+  // distance), then hold.
   double max_extrapolation_s = 0.2;
+  double max_extrapolation_m = 100.0;
+  // Velocity and rates differenced from successive poses (packets without
+  // them) use a time step of at least min_derive_step_fraction packet
+  // intervals and are clamped to these physical limits.
+  double min_derive_step_fraction = 0.5;
+  double max_speed_mps = 1000.0;
+  double max_angular_rate_dps = 1000.0;
+  // Streams without sender times: stamp them with the de-jittered sender
+  // clock (false: the raw receive times, as before).
+  bool dejitter_receive_times = true;
+  SenderClockOptions sender_clock;
   // A sender time off by more than this from the expected progression
   // (last sender time + receive time elapsed since) resets the filter.
   double time_jump_s = 1.0;
@@ -133,11 +165,16 @@ class PoseFilter {
   // Feed one received packet. true when it entered the buffer.
   bool push(const PoseSample& s);
   // The pose to render at IG time now_s. nullopt until the first valid
-  // sample. Call once per frame with a non-decreasing clock.
-  std::optional<FilteredPose> sample(double now_s);
+  // sample. Call once per frame with a non-decreasing clock. display_lead_s:
+  // how long after now_s the frame is expected on screen (Latest mode
+  // extrapolates to now_s + display_lead_s; the others ignore it).
+  std::optional<FilteredPose> sample(double now_s, double display_lead_s = 0.0);
 
   // Forget all samples and clock estimates (counters kept).
   void reset();
+  void set_latency_mode(LatencyMode m) { opt_.latency = m; }
+  LatencyMode latency_mode() const { return opt_.latency; }
+  const SenderClock& sender_clock() const { return sender_clock_; }
 
   const PoseFilterCounters& counters() const { return counters_; }
   const PoseFilterOptions& options() const { return opt_; }
@@ -164,6 +201,9 @@ class PoseFilter {
     bool has_omega = false;
   };
 
+  void clear_stream();
+  glm::dvec3 clamp_velocity(glm::dvec3 v);
+  glm::dvec3 clamp_omega(glm::dvec3 w);
   Entry& at(int k) { return buf_[(head_ + k) % kCapacity]; }
   const Entry& at(int k) const { return buf_[(head_ + k) % kCapacity]; }
   void restart(const Entry& e);
@@ -172,12 +212,13 @@ class PoseFilter {
   void note_offset(double t, double recv);
   void note_seen(std::uint32_t seq, double t);
   bool seen(std::uint32_t seq, double t) const;
-  glm::dvec3 extrap_velocity() const;
-  glm::dvec3 extrap_omega() const;
+  glm::dvec3 extrap_velocity();
+  glm::dvec3 extrap_omega();
   FilteredPose interpolate(const Entry& a, const Entry& b, double tau) const;
 
   PoseFilterOptions opt_;
   PoseFilterCounters counters_;
+  SenderClock sender_clock_;
 
   std::array<Entry, kCapacity> buf_{};
   int head_ = 0, count_ = 0;

@@ -3,12 +3,15 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netdb.h>
+#include <poll.h>
 #include <sys/socket.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <algorithm>
 #include <vector>
 
 namespace ig::io::net {
@@ -28,6 +31,20 @@ in_addr parse_address(const std::string& host, const std::string& what) {
   a = reinterpret_cast<sockaddr_in*>(res->ai_addr)->sin_addr;
   freeaddrinfo(res);
   return a;
+}
+
+double timespec_s(const timespec& t) { return double(t.tv_sec) + double(t.tv_nsec) * 1e-9; }
+
+// The kernel stamps datagrams on CLOCK_REALTIME; the IG runs on the steady
+// clock. Map through the two clocks read now (a few ns apart). A stamp that
+// is in the future or more than 10 s old (the realtime clock was stepped) is
+// not trusted: the read time is used instead.
+double kernel_stamp_to_steady(const timespec& kernel, double steady_now, bool& used) {
+  timespec real{};
+  clock_gettime(CLOCK_REALTIME, &real);
+  const double age = timespec_s(real) - timespec_s(kernel);
+  used = age >= 0.0 && age < 10.0;
+  return used ? steady_now - age : steady_now;
 }
 
 }  // namespace
@@ -68,6 +85,9 @@ UdpReceiver::UdpReceiver(const std::string& bind_endpoint, const std::string& in
   setsockopt(fd_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one);
   const int rcvbuf = 4 << 20;  // absorb bursts between frames
   setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
+  // Receive time per datagram, taken by the kernel when it arrived (not when
+  // the frame loop gets round to reading it).
+  setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &one, sizeof one);
   if (bind(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
     const std::string e = errno_text();
     close(fd_);
@@ -102,22 +122,47 @@ std::size_t UdpReceiver::poll(const Handler& handler, std::size_t max_datagrams)
   std::size_t n = 0;
   while (n < max_datagrams) {
     sockaddr_in from{};
-    socklen_t len = sizeof from;
-    const ssize_t got = recvfrom(fd_, buf.data(), buf.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&from), &len);
+    iovec iov{buf.data(), buf.size()};
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec))];
+    msghdr msg{};
+    msg.msg_name = &from;
+    msg.msg_namelen = sizeof from;
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof control;
+    const ssize_t got = recvmsg(fd_, &msg, MSG_TRUNC);
     if (got < 0) {
       if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) ++stats_.errors;
       break;
     }
+    const double now = steady_now_s();  // per datagram, never once per poll
+    double received = now;
+    bool kernel = false;
+    for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c; c = CMSG_NXTHDR(&msg, c)) {
+      if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_TIMESTAMPNS) {
+        timespec ts{};
+        std::memcpy(&ts, CMSG_DATA(c), sizeof ts);
+        received = kernel_stamp_to_steady(ts, now, kernel);
+      }
+    }
     ++n;
     ++stats_.datagrams;
     stats_.bytes += std::uint64_t(got);
+    if (kernel) ++stats_.kernel_timestamps;
     if (std::size_t(got) > buf.size()) {
       ++stats_.truncated;
       continue;
     }
-    handler(std::span<const std::uint8_t>(buf.data(), std::size_t(got)), steady_now_s(), from);
+    handler(std::span<const std::uint8_t>(buf.data(), std::size_t(got)), received, from);
   }
   return n;
+}
+
+bool UdpReceiver::wait_readable(double timeout_s) const {
+  pollfd p{fd_, POLLIN, 0};
+  const int ms = timeout_s <= 0.0 ? 0 : int(std::min(timeout_s, 3600.0) * 1000.0 + 0.5);
+  return ::poll(&p, 1, ms) > 0 && (p.revents & POLLIN);
 }
 
 UdpSender::UdpSender(const std::string& destination, const std::string& interface_address)

@@ -30,6 +30,7 @@ struct ReceiveStats {
   std::uint64_t bytes = 0;
   std::uint64_t truncated = 0;  // larger than the receive buffer (dropped)
   std::uint64_t errors = 0;
+  std::uint64_t kernel_timestamps = 0;  // datagrams with a kernel receive time (SO_TIMESTAMPNS)
 };
 
 class UdpReceiver {
@@ -45,8 +46,13 @@ class UdpReceiver {
   using Handler = std::function<void(std::span<const std::uint8_t> datagram, double receive_time_s,
                                      const sockaddr_in& from)>;
   // Hands every datagram that has already arrived to `handler` (at most
-  // max_datagrams), receive time on the steady clock in seconds. Never blocks.
+  // max_datagrams), with its receive time on the steady clock in seconds:
+  // the kernel's arrival stamp (SO_TIMESTAMPNS), or the clock read for that
+  // datagram when the kernel gave none. Never blocks.
   std::size_t poll(const Handler& handler, std::size_t max_datagrams = 4096);
+  // Blocks until a datagram is waiting or timeout_s passes (CIGI synchronous
+  // operation waits on the host this way). true: one is waiting.
+  bool wait_readable(double timeout_s) const;
   const ReceiveStats& stats() const { return stats_; }
   std::uint16_t port() const;  // the bound port (useful with port 0)
   int fd() const { return fd_; }
