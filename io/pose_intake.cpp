@@ -48,7 +48,10 @@ void PoseIntake::handle(Protocol protocol, std::span<const std::uint8_t> datagra
     case Protocol::CanAerospace:
     case Protocol::CanFd: reject(protocol, "not-a-datagram-protocol"); return;
   }
-  if (r.host_frame) last_host_frame_ = r.host_frame;
+  if (r.host_frame) {
+    last_host_frame_ = r.host_frame;
+    ++ig_controls_;
+  }
   if (!r.pose) {
     if (r.reject == wire::Reject::NoPose) {
       ++counters_[int(protocol)].no_pose;

@@ -54,6 +54,9 @@ class PoseIntake {
   std::string last_source() const { return last_source_; }
   // CIGI: the newest host frame counter seen in an IG Control packet.
   std::optional<std::uint32_t> last_host_frame() const { return last_host_frame_; }
+  // CIGI: datagrams that carried an IG Control (one per host frame; CIGI
+  // synchronous operation renders one IG frame for each).
+  std::uint64_t ig_controls() const { return ig_controls_; }
 
  private:
   void reject(Protocol p, const std::string& reason);
@@ -62,6 +65,7 @@ class PoseIntake {
   std::array<SourceCounters, kProtocolCount> counters_;
   std::string last_source_;
   std::optional<std::uint32_t> last_host_frame_;
+  std::uint64_t ig_controls_ = 0;
 };
 
 }  // namespace ig::io

@@ -551,7 +551,7 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
     if (!root.is_object()) {
       throw ScenarioError(std::string("top level must be a JSON object (got ") + root.type_name() + ")");
     }
-    check_keys(root, "", {"name", "terrain", "render", "channels", "path", "time", "capture"});
+    check_keys(root, "", {"name", "terrain", "render", "channels", "path", "time", "capture", "live"});
 
     Scenario s;
     s.name = root.contains("name") ? get_name(root["name"], "name") : default_name;
@@ -599,6 +599,17 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
           }
           s.capture_times_s.push_back(v);
         }
+      }
+    }
+    if (root.contains("live")) {
+      const json& l = root["live"];
+      require_object(l, "live");
+      check_keys(l, "live", {"latency"});
+      if (l.contains("latency")) {
+        const std::string m = get_string(l["latency"], "live.latency");
+        if (m != "smooth" && m != "latest" && m != "sync")
+          fail("live.latency", "must be \"smooth\", \"latest\" or \"sync\"" + got(l["latency"]));
+        s.live_latency = m;
       }
     }
     return s;

@@ -108,6 +108,9 @@ struct Scenario {
   double time_step_s = 1.0 / 60.0;
   double duration_s = 10.0;             // defaults to the last key's time when omitted
   std::vector<double> capture_times_s;  // captured as PNG (nearest frame)
+  // Live IG (ig serve): how the pose filter trades latency for smoothness,
+  // "smooth", "latest" or "sync" (docs/pose-filter.md, "Latency modes").
+  std::string live_latency = "smooth";
 };
 
 // Parse JSON text / a file. Throws ScenarioError("<where>: <key path>: <reason>").

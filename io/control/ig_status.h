@@ -64,6 +64,7 @@ struct IgControls {
   std::uint32_t level0_budget = 2048;  // Level0 triangles (method rebuilt when written)
   float fog_visibility_m = 60000.0f;   // >= 0, 0 = no fog
   bool capture = false;                // capture-next-frame trigger
+  std::uint16_t latency_mode = 0;      // 0 smooth, 1 latest, 2 CIGI synchronous (io::LatencyMode)
 };
 
 // What changed since the frame loop last looked (ModbusServer::take_controls).
@@ -73,7 +74,8 @@ struct ControlUpdate {
   bool rebuild = false;       // alpha or Level0 budget written
   bool fog = false;
   bool capture = false;       // capture the next frame (the register is already reset to 0)
-  bool any() const { return thresholds || rebuild || fog || capture; }
+  bool latency = false;       // latency_mode written
+  bool any() const { return thresholds || rebuild || fog || capture || latency; }
 };
 
 }  // namespace ig::io::control

@@ -210,6 +210,7 @@ void ModbusServer::run() {
               m.pending.thresholds |= before.a1 != after.a1 || before.a2 != after.a2;
               m.pending.rebuild |= before.alpha != after.alpha || before.level0_budget != after.level0_budget;
               m.pending.fog |= before.fog_visibility_m != after.fog_visibility_m;
+              m.pending.latency |= before.latency_mode != after.latency_mode;
               if (addr <= hold::kCapture && addr + int(values.size()) > hold::kCapture)
                 m.pending.capture = after.capture;
               m.holding = candidate;

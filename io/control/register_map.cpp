@@ -59,6 +59,7 @@ void encode_controls(const IgControls& c, std::span<std::uint16_t, hold::kCount>
   put_u32(&r[hold::kLevel0Budget], c.level0_budget);
   put_f32(&r[hold::kFogVisibility], c.fog_visibility_m);
   r[hold::kCapture] = c.capture ? 1 : 0;
+  r[hold::kLatencyMode] = c.latency_mode;
 }
 
 IgControls decode_controls(std::span<const std::uint16_t, hold::kCount> r) {
@@ -71,6 +72,7 @@ IgControls decode_controls(std::span<const std::uint16_t, hold::kCount> r) {
   c.level0_budget = get_u32(&r[hold::kLevel0Budget]);
   c.fog_visibility_m = get_f32(&r[hold::kFogVisibility]);
   c.capture = r[hold::kCapture] != 0;
+  c.latency_mode = r[hold::kLatencyMode];
   return c;
 }
 

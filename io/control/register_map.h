@@ -48,11 +48,11 @@ inline constexpr int kCount = 37;
 // Holding register addresses (controls, FC 03 / 06 / 16).
 namespace hold {
 inline constexpr std::uint16_t kFreeze = 0, kWireframe = 1, kA1 = 2, kA2 = 4, kAlpha = 6, kLevel0Budget = 8,
-                               kFogVisibility = 10, kCapture = 12;
-inline constexpr int kCount = 13;
+                               kFogVisibility = 10, kCapture = 12, kLatencyMode = 13;
+inline constexpr int kCount = 14;
 }  // namespace hold
 
-inline constexpr std::array<RegisterDef, 29> kRegisterMap = {{
+inline constexpr std::array<RegisterDef, 30> kRegisterMap = {{
     {"ig_state", Block::Input, in::kState, RegType::U16, "enum", 0, 4, false, false,
      "0 starting, 1 waiting for a pose, 2 running, 3 frozen, 4 stopping"},
     {"status_flags", Block::Input, in::kFlags, RegType::U16, "bits", 0, 63, false, false,
@@ -112,6 +112,8 @@ inline constexpr std::array<RegisterDef, 29> kRegisterMap = {{
      "fog visibility; 0 = no fog"},
     {"capture", Block::Holding, hold::kCapture, RegType::U16, "trigger", 0, 1, false, false,
      "write 1: the next frame is saved as PNG; reads 0 again once taken"},
+    {"latency_mode", Block::Holding, hold::kLatencyMode, RegType::U16, "enum", 0, 2, false, false,
+     "pose latency: 0 smooth, 1 latest, 2 CIGI synchronous (needs a CIGI source; applied at the frame boundary)"},
 }};
 
 const RegisterDef* find_register(std::string_view name);

@@ -390,6 +390,24 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s, double display_lead
   if (count_ == 0) return std::nullopt;
   if (!std::isfinite(now_s)) now_s = clock_init_ ? last_now_ : at(count_ - 1).recv;
 
+  if (count_ == 1 && !clock_init_ && opt_.latency == LatencyMode::Smooth) {
+    // One sample of a new stream: nothing to interpolate towards and no
+    // packet interval yet. Show it and start the timeline when the second
+    // arrives (started now, the timeline would run ahead of a slow stream
+    // with a nominal delay and jump when the second sample came).
+    FilteredPose out;
+    out.position = at(0).pos;
+    out.attitude = at(0).att;
+    out.mode = FilteredPose::Holding;
+    out.age_s = now_s - at(0).recv;
+    out.sample_time_s = at(0).t;
+    out.render_time_s = at(0).t + offset_;
+    out.playout_delay_s = playout_delay_s();
+    ++counters_.holds;
+    last_out_ = out;
+    have_output_ = true;
+    return out;
+  }
   // Playout point: now - (offset + delay), the sum slewed for a smooth timeline.
   const double delay = playout_delay_s();
   const double target = offset_ + delay;

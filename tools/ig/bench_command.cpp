@@ -243,7 +243,7 @@ std::string label_of(const Variant& v, const render::TerrainMethod& m) {
 
 int run_bench_command(const std::vector<std::string>& argv) {
   const auto parsed = parse_or_usage("ig bench", kUsage, parse_args, argv);
-  if (!parsed) return 2;
+  if (!parsed) return help_requested(argv) ? 0 : 2;
   const Args& args = *parsed;
   const auto start = Clock::now();
   try {

@@ -14,11 +14,24 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// --help or -h anywhere among the arguments.
+inline bool help_requested(const std::vector<std::string>& argv) {
+  for (const auto& a : argv)
+    if (a == "--help" || a == "-h") return true;
+  return false;
+}
+
 // A subcommand's argument parsing: the parsed arguments, or nullopt after
-// printing "COMMAND: reason" and the usage text (the caller exits with 2).
+// printing the usage text, to stdout on --help (the caller exits with 0:
+// `return help_requested(argv) ? 0 : 2`), else to stderr after
+// "COMMAND: reason" (the caller exits with 2).
 template <class Parse>
 auto parse_or_usage(const char* command, const char* usage, Parse parse, const std::vector<std::string>& argv)
     -> std::optional<decltype(parse(argv))> {
+  if (help_requested(argv)) {
+    std::cout << usage;
+    return std::nullopt;
+  }
   try {
     return parse(argv);
   } catch (const UsageError& e) {

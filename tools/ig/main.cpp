@@ -12,11 +12,13 @@ constexpr const char* kHelp =
     "  ig run SCENARIO.json [--out DIR] [--frames N] [--size WxH] [--method NAME] [--headless|--window]\n"
     "  ig serve [--config FILE] [--udp ADDR:PORT] [--cigi ADDR:PORT --cigi-reply HOST:PORT] [--fgfdm ADDR:PORT]\n"
     "           [--multicast GROUP] [--channel NAME] [--frames N | --seconds S] [--record FILE] [--out DIR]\n"
+    "           [--latency smooth|latest|sync] [--modbus ADDR:PORT] [--can IFNAME]\n"
     "  ig send SCENARIO.json --to ADDR:PORT [--protocol native|cigi|fgfdm] [--rate HZ] [--loss P] ...\n"
     "  ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
     "           [--error-samples N] [--match-px PX] [--out DIR]   (error against run time, docs/bench.md)\n"
     "  ig info DEMFILE [--encoding auto|terrain-rgb|png16] [--scale S] [--offset O] [--spacing M]\n"
-    "  ig help\n";
+    "  ig help\n"
+    "Every command prints its full usage with --help.\n";
 }
 
 int main(int argc, char** argv) {

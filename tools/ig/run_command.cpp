@@ -73,7 +73,7 @@ Args parse_args(const std::vector<std::string>& a) {
 
 int run_run_command(const std::vector<std::string>& argv) {
   const auto parsed = parse_or_usage("ig run", kUsage, parse_args, argv);
-  if (!parsed) return 2;
+  if (!parsed) return help_requested(argv) ? 0 : 2;
   const Args& args = *parsed;
   try {
     io::Scenario scenario = io::load_scenario(args.scenario);

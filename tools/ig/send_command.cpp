@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -37,10 +38,20 @@ constexpr const char* kUsage =
     "usage: ig send SCENARIO.json --to ADDR:PORT [--protocol native|cigi|fgfdm] [--rate HZ]\n"
     "               [--duration S] [--geodetic] [--loss P] [--burst-loss P --burst-length N]\n"
     "               [--jitter-ms J] [--reorder P] [--duplicate P] [--corrupt P] [--seed N]\n"
-    "               [--flood N] [--cigi-listen ADDR:PORT] [--log FILE] [--quiet]\n"
+    "               [--flood N] [--cigi-listen ADDR:PORT [--cigi-sync]] [--log FILE] [--quiet]\n"
+    "               [--no-timestamp] [--pairs N] [--stall-every N [--stall-ms A,B]]\n"
     "       ig send SCENARIO.json --can IFNAME [--can-fd] [--can-node N] [--can-altitude 320|322|332]\n"
     "               [--can-float-position] [--rate HZ] [--duration S] [impairments as above]\n"
     "  --flood N sends N packets as fast as the socket takes them (no pacing).\n"
+    "  Host behaviours seen in real simulation hosts:\n"
+    "  --no-timestamp  no sender time (CIGI: timestamp-valid bit clear, as CigiMiniHost;\n"
+    "                  native: no sender-time field); FGNetFDM never has one.\n"
+    "  --pairs N       every Nth packet is held up and sent back to back with the next.\n"
+    "  --stall-every N every N packets the host's own frame stalls: gaps of A then B ms\n"
+    "                  (--stall-ms, default 133,17), each pose taken when it is sent, as\n"
+    "                  FlightGear's main loop does.\n"
+    "  --cigi-sync     CIGI synchronous host: wait for the IG's Start Of Frame echoing each\n"
+    "                  host frame before sending the next (needs --cigi-listen).\n"
     "  --can IFNAME sends each pose as CANaerospace frames (geodetic position), or with\n"
     "  --can-fd as one 64-byte CAN FD pose frame (docs/can.md); impairments act per pose.\n";
 
@@ -56,6 +67,9 @@ struct Args {
   std::optional<int> flood;
   std::optional<std::string> cigi_listen, log, can;
   bool can_fd = false, can_float_position = false;
+  bool no_timestamp = false, cigi_sync = false;
+  int pairs = 0, stall_every = 0;
+  double stall_a_ms = 133.0, stall_b_ms = 17.0;
   int can_node = 1, can_altitude = 322;
   bool quiet = false;
 };
@@ -85,6 +99,18 @@ Args parse_args(const std::vector<std::string>& a) {
     else if (f == "--seed") args.seed = unsigned(r.positive_int(f));
     else if (f == "--flood") args.flood = r.positive_int(f);
     else if (f == "--cigi-listen") args.cigi_listen = r.value(f);
+    else if (f == "--cigi-sync") args.cigi_sync = true;
+    else if (f == "--no-timestamp") args.no_timestamp = true;
+    else if (f == "--pairs") args.pairs = r.positive_int(f);
+    else if (f == "--stall-every") args.stall_every = r.positive_int(f);
+    else if (f == "--stall-ms") {
+      const std::string v = r.value(f);
+      const auto comma = v.find(',');
+      if (comma == std::string::npos) throw UsageError("--stall-ms: expected A,B (milliseconds)");
+      args.stall_a_ms = parse_double(f, v.substr(0, comma));
+      args.stall_b_ms = parse_double(f, v.substr(comma + 1));
+      if (!(args.stall_a_ms > 0 && args.stall_b_ms > 0)) throw UsageError("--stall-ms: both gaps must be > 0");
+    }
     else if (f == "--log") args.log = r.value(f);
     else if (f == "--quiet") args.quiet = true;
     else if (f == "--can") args.can = r.value(f);
@@ -97,6 +123,9 @@ Args parse_args(const std::vector<std::string>& a) {
     else throw UsageError("unexpected argument " + f);
   }
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
+  if (args.cigi_sync && !args.cigi_listen) throw UsageError("--cigi-sync needs --cigi-listen");
+  if (args.cigi_sync && args.protocol != io::Protocol::Cigi) throw UsageError("--cigi-sync needs --protocol cigi");
+  if (args.pairs == 1) throw UsageError("--pairs: N must be at least 2");
   if (args.to.empty() && !args.can) throw UsageError("missing --to ADDR:PORT (or --can IFNAME)");
   if (!args.to.empty() && args.can) throw UsageError("--to and --can exclude each other");
   if ((args.can_fd || args.can_float_position) && !args.can) throw UsageError("--can-fd / --can-float-position need --can");
@@ -120,6 +149,7 @@ struct Packet {
   std::uint32_t order;  // tie-break keeps equal times in sequence
   std::vector<std::uint8_t> bytes;        // UDP: one datagram
   std::vector<io::wire::CanFrame> frames; // CAN: the pose's frames
+  std::uint32_t sequence = 0;             // host frame / packet number
   bool operator<(const Packet& o) const { return send_at_s != o.send_at_s ? send_at_s > o.send_at_s : order > o.order; }
 };
 
@@ -127,7 +157,7 @@ struct Packet {
 
 int run_send_command(const std::vector<std::string>& argv) {
   const auto parsed = parse_or_usage("ig send", kUsage, parse_args, argv);
-  if (!parsed) return 2;
+  if (!parsed) return help_requested(argv) ? 0 : 2;
   const Args& args = *parsed;
   try {
     const io::Scenario scenario = io::load_scenario(args.scenario);
@@ -166,7 +196,7 @@ int run_send_command(const std::vector<std::string>& argv) {
     if (args.log) {
       log.open(*args.log);
       if (!log) throw std::runtime_error(*args.log + ": cannot create send log");
-      log << "sequence,t_s,sender_time_s,sent,x_m,y_m,z_m,heading_deg,pitch_deg,roll_deg\n";
+      log << "sequence,t_s,sender_time_s,sent,x_m,y_m,z_m,heading_deg,pitch_deg,roll_deg,steady_s\n";
     }
 
     const double duration = args.duration_s.value_or(scenario.duration_s);
@@ -189,7 +219,7 @@ int run_send_command(const std::vector<std::string>& argv) {
       m.sequence = std::uint32_t(i);
       m.has_sequence = true;
       m.sender_time_s = sender_time;
-      m.has_sender_time = true;
+      m.has_sender_time = !args.no_timestamp;
       m.velocity_mps = velocity;
       m.has_velocity = true;
       m.position = pose.position;
@@ -197,7 +227,7 @@ int run_send_command(const std::vector<std::string>& argv) {
         m.frame = io::wire::PoseMessage::Frame::Geodetic;
         m.position = *to_geodetic(pose.position);
       }
-      Packet p{0.0, 0, {}, {}};
+      Packet p{0.0, 0, {}, {}, std::uint32_t(i)};
 #ifdef IG_WITH_CAN
       if (args.can) {
         if (args.can_fd) p.frames.push_back(io::wire::encode_can_fd_pose(m));
@@ -243,7 +273,7 @@ int run_send_command(const std::vector<std::string>& argv) {
       if (log.is_open())
         log << i << "," << t << "," << sender_time - start << "," << sent << "," << pose.position.x << ","
             << pose.position.y << "," << pose.position.z << "," << hpr.heading_deg << "," << hpr.pitch_deg << ","
-            << hpr.roll_deg << "\n";
+            << hpr.roll_deg << "," << std::setprecision(15) << start + t << std::setprecision(6) << "\n";
     };
 
     // Paced: the whole schedule first (impairments decide send times), then
@@ -253,10 +283,20 @@ int run_send_command(const std::vector<std::string>& argv) {
     if (!args.flood) {
       int burst_left = 0;
       std::uint32_t order = 0;
+      double stalled_t = 0.0;  // --stall-every: the host's own (irregular) send clock
+      double last_t = 0.0;
       for (int i = 0; i < count; ++i) {
         io::Hpr hpr;
         io::Pose pose;
-        const double t = i * period;
+        double t = i * period;
+        if (args.stall_every) {
+          t = stalled_t;
+          const int phase = i % args.stall_every;
+          stalled_t += phase == args.stall_every - 2 ? args.stall_a_ms * 1e-3
+                       : phase == args.stall_every - 1 ? args.stall_b_ms * 1e-3
+                                                        : period;
+        }
+        last_t = t;
         Packet pk = make_packet(i, t, start + t, hpr, pose);
         bool sent = true;
         if (burst_left > 0) --burst_left, sent = false;
@@ -269,6 +309,8 @@ int run_send_command(const std::vector<std::string>& argv) {
         }
         corrupt(pk);
         double at = t + rng.uniform() * args.jitter_ms * 1e-3;
+        // Held up, then sent just before the next one (same send time, earlier order).
+        if (args.pairs && i % args.pairs == args.pairs - 1) at = std::max(at, t + period);
         if (rng.chance(args.reorder)) at += 1.5 * period, ++reordered;  // overtaken by the next packet
         pk.send_at_s = at;
         pk.order = order++;
@@ -279,6 +321,15 @@ int run_send_command(const std::vector<std::string>& argv) {
           queue.push(pk);
           ++duplicated;
         }
+      }
+      // The log goes on 0.5 s past the last packet (sent = 0): where the host
+      // would have been, to judge the IG's extrapolation after the stream stops.
+      const double end = last_t;
+      for (int j = 1; j * period <= 0.5 + 1e-9; ++j) {
+        io::Hpr hpr;
+        io::Pose pose;
+        make_packet(count - 1 + j, end + j * period, start + end + j * period, hpr, pose);
+        log_pose(count - 1 + j, end + j * period, start + end + j * period, false, pose, hpr);
       }
     }
 
@@ -318,12 +369,28 @@ int run_send_command(const std::vector<std::string>& argv) {
         if (i % 256 == 0) poll_sof();
       }
     }
+    std::uint64_t sync_timeouts = 0;
     while (!queue.empty()) {
       const Packet p = queue.top();
       queue.pop();
       const double wait = start + p.send_at_s - io::net::steady_now_s();
       if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
       send_packet(p);
+      if (args.cigi_sync) {
+        // Synchronous host: the next host frame only after the IG's Start Of
+        // Frame for this one (2 s without it: counted, go on).
+        const std::uint64_t before = sof_count;
+        const double give_up = io::net::steady_now_s() + 2.0;
+        while (sof_count == before || !last_sof || last_sof->last_host_frame != p.sequence) {
+          const double left = give_up - io::net::steady_now_s();
+          if (left <= 0) {
+            ++sync_timeouts;
+            break;
+          }
+          if (sof_socket->wait_readable(left)) poll_sof();
+        }
+        continue;
+      }
       poll_sof();
     }
     if (sof_socket) {  // the IG answers each frame: collect the last replies
@@ -342,6 +409,9 @@ int run_send_command(const std::vector<std::string>& argv) {
                     "%llu not increasing\n",
                     (unsigned long long)sof_count, last_sof ? last_sof->ig_frame : 0u,
                     last_sof ? last_sof->last_host_frame : 0u, (unsigned long long)sof_not_increasing);
+      if (args.cigi_sync)
+        std::printf("ig send: synchronous: %llu host frames answered, %llu timed out\n",
+                    (unsigned long long)(count - lost - sync_timeouts), (unsigned long long)sync_timeouts);
     }
     return 0;
   } catch (const std::exception& e) {

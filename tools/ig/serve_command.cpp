@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -32,7 +33,7 @@
 #endif
 #ifdef IG_WITH_MODBUS
 #include "io/control/modbus_server.h"
-#include "render/twolevel_method.h"
+#include "modbus_link.h"
 #endif
 
 namespace ig::app {
@@ -42,11 +43,15 @@ constexpr const char* kUsage =
     "usage: ig serve [--config FILE] [--udp ADDR:PORT] [--cigi ADDR:PORT [--cigi-reply HOST:PORT]]\n"
     "                [--fgfdm ADDR:PORT] [--multicast GROUP] [--channel NAME] [--headless | --window]\n"
     "                [--out DIR] [--frames N | --seconds S] [--rate HZ] [--record FILE]\n"
-    "                [--size WxH] [--method NAME] [--modbus ADDR:PORT] [--quiet]\n"
+    "                [--size WxH] [--method NAME] [--modbus ADDR:PORT] [--latency smooth|latest|sync] [--quiet]\n"
     "                [--can IFNAME [--can-altitude 320|322|332] [--can-node N] [--can-max-age-ms MS]]\n"
     "  ADDR may be empty (':5500' = all interfaces); with --multicast GROUP every\n"
     "  source binds GROUP:PORT and joins the group on loopback.\n"
     "  --modbus ADDR:PORT: Modbus TCP status/control server (docs/modbus.md).\n"
+    "  --latency: smooth (interpolate behind an adaptive playout delay, default), latest (newest\n"
+    "  pose extrapolated to the frame's display time) or sync (CIGI synchronous: one frame per\n"
+    "  host IG Control, answered with Start Of Frame; needs --cigi). Default: the config's\n"
+    "  live.latency (docs/pose-filter.md).\n"
     "  --can IFNAME: SocketCAN pose source, CANaerospace and the CAN FD pose (docs/can.md);\n"
     "  altitude from id 322 unless --can-altitude, any node unless --can-node, fields\n"
     "  older than --can-max-age-ms (100) are stale. A missing or down interface is retried.\n";
@@ -56,7 +61,7 @@ extern "C" void on_signal(int) { g_stop = true; }
 
 struct Args {
   std::string config;
-  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus, can;
+  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus, can, latency;
   int can_altitude = 322;
   std::optional<int> can_node;
   double can_max_age_ms = 100.0;
@@ -82,6 +87,11 @@ Args parse_args(const std::vector<std::string>& a) {
     else if (f == "--multicast") args.multicast = r.value(f);
     else if (f == "--channel") args.channel = r.value(f);
     else if (f == "--record") args.record = r.value(f);
+    else if (f == "--latency") {
+      args.latency = r.value(f);
+      if (!io::parse_latency_mode(*args.latency))
+        throw UsageError("--latency: expected smooth, latest or sync, got '" + *args.latency + "'");
+    }
     else if (f == "--modbus") args.modbus = r.value(f);
     else if (f == "--can") args.can = r.value(f);
     else if (f == "--can-altitude") args.can_altitude = r.can_altitude_id(f);
@@ -136,127 +146,12 @@ struct Source {
   std::unique_ptr<io::net::UdpReceiver> socket;
 };
 
-#ifdef IG_WITH_MODBUS
-// ig serve's side of the Modbus server (docs/modbus.md): controls applied at
-// the frame boundary, a status snapshot published after every frame. The
-// server thread is never waited on: both are short copies under its mutex.
-class ModbusLink {
- public:
-  ModbusLink(const std::string& endpoint, ScenarioRunner& runner, bool quiet) : runner_(runner), quiet_(quiet) {
-    const auto& r = runner.scenario().render;
-    active_.a1 = float(r.twolevel.a1);
-    active_.a2 = float(r.twolevel.a2);
-    active_.alpha = float(r.twolevel.alpha);
-    active_.level0_budget = std::uint32_t(r.twolevel.level0_budget);
-    active_.fog_visibility_m = float(r.fog_visibility_m);
-    server_ = std::make_unique<io::control::ModbusServer>(io::control::parse_modbus_endpoint(endpoint), active_);
-    if (!quiet_)
-      std::cerr << "ig serve: Modbus TCP on " << endpoint.substr(0, endpoint.rfind(':')) << ":" << server_->port()
-                << "\n";
-  }
-
-  // Before rendering: freeze, wireframe, thresholds, fog; true = capture this frame.
-  bool apply_controls() {
-    const auto u = server_->take_controls();
-    const auto& c = u.controls;
-    frozen_ = c.freeze;
-    wireframe_ = c.wireframe;
-    for (auto& ch : runner_.channels()) {
-      ch.renderer->set_wireframe(c.wireframe);
-      if (u.thresholds)
-        if (auto* t = dynamic_cast<render::TwoLevelMethod*>(ch.method.get())) t->set_thresholds(c.a1, c.a2);
-    }
-    if (u.fog) runner_.scene().set_fog_visibility(c.fog_visibility_m);
-    if (u.rebuild && (c.alpha != active_.alpha || c.level0_budget != active_.level0_budget)) {
-      // Level0 and the band width are built with the method: rebuild it now,
-      // at the frame boundary (this frame pays the Level0 build).
-      io::TwoLevelSpec t = runner_.scenario().render.twolevel;
-      t.alpha = c.alpha;
-      t.level0_budget = int(c.level0_budget);
-      t.a1 = c.a1;
-      t.a2 = c.a2;
-      runner_.rebuild_method(t);
-      active_.alpha = c.alpha;
-      active_.level0_budget = c.level0_budget;
-      if (!quiet_)
-        std::cerr << "ig serve: modbus: rebuilt the LOD method (level0_budget " << c.level0_budget << ", band_alpha "
-                  << c.alpha << ")\n";
-    }
-    return u.capture;
-  }
-  bool frozen() const { return frozen_; }
-
-  void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, double pose_age_ms,
-               bool last, const io::control::IgStatus& can_part) {
-    namespace ctl = io::control;
-    const double frame_us = (frame_end_s - frame_start_s) * 1e6;
-    window_.push_back({frame_end_s, frame_us});
-    while (!window_.empty() && window_.front().first < frame_end_s - 1.0) window_.erase(window_.begin());
-    std::vector<double> v;
-    for (const auto& w : window_) v.push_back(w.second);
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-
-    ctl::IgStatus s;
-    const bool received = !feed.intake().last_source().empty();
-    s.state = last ? ctl::IgState::Stopping
-              : frozen_ ? ctl::IgState::Frozen
-              : received ? ctl::IgState::Running
-                         : ctl::IgState::WaitingPose;
-    s.frame_counter = std::uint32_t(frames);
-    s.last_frame_us = std::uint32_t(std::lround(frame_us));
-    s.median_frame_us = std::uint32_t(std::lround(v[v.size() / 2]));
-    const auto& ch = runner_.channels().front();
-    s.triangles = std::uint32_t(std::clamp<long long>(ch.last.method.triangles, 0, 0xFFFFFFFFLL));
-    std::uint16_t flags = 0;
-    if (auto* t = dynamic_cast<const render::TwoLevelMethod*>(ch.method.get())) {
-      s.level1_size = std::uint16_t(t->level1_size());
-      s.level1_ratio = float(t->last_ratio());
-      flags |= ctl::kFlagTwoLevel;
-    }
-    s.pose_age_ms = pose_age_ms < 0 ? 0xFFFFFFFFu : std::uint32_t(std::min(std::lround(pose_age_ms), 0xFFFFFFFEL));
-    auto counts = [&](io::Protocol p) {
-      const auto& c = feed.intake().counters(p);
-      return ctl::PacketCounts{std::uint32_t(c.ok), std::uint32_t(c.bad)};
-    };
-    s.native = counts(io::Protocol::Native);
-    s.cigi = counts(io::Protocol::Cigi);
-    s.fgfdm = counts(io::Protocol::FgNetFdm);
-    s.can_link = can_part.can_link;
-    s.can_poses = can_part.can_poses;
-    s.can_rejected = can_part.can_rejected;
-    s.can_error_frames = can_part.can_error_frames;
-    if (frozen_) flags |= ctl::kFlagFrozen;
-    if (wireframe_) flags |= ctl::kFlagWireframe;
-    if (received) flags |= ctl::kFlagPoseReceived;
-    s.flags = flags;
-    server_->publish(s);
-  }
-
-  nlohmann::json summary() const {
-    const auto c = server_->counters();
-    return {{"port", server_->port()},
-            {"requests", c.requests},
-            {"exceptions", c.exceptions},
-            {"writes_applied", c.writes_applied},
-            {"clients_accepted", c.clients_accepted},
-            {"clients_dropped", c.clients_dropped}};
-  }
-
- private:
-  ScenarioRunner& runner_;
-  bool quiet_;
-  io::control::IgControls active_;  // what the IG runs with (alpha, budget: as built)
-  std::unique_ptr<io::control::ModbusServer> server_;
-  bool frozen_ = false, wireframe_ = false;
-  std::vector<std::pair<double, double>> window_;  // (frame end s, frame us) of the last second
-};
-#endif
 
 }  // namespace
 
 int run_serve_command(const std::vector<std::string>& argv) {
   const auto parsed = parse_or_usage("ig serve", kUsage, parse_args, argv);
-  if (!parsed) return 2;
+  if (!parsed) return help_requested(argv) ? 0 : 2;
   const Args& args = *parsed;
   try {
     const std::string config = args.config.empty() ? std::string(IG_SOURCE_DIR) + "/scenarios/default.json" : args.config;
@@ -272,6 +167,9 @@ int run_serve_command(const std::vector<std::string>& argv) {
     const std::string name = scenario.name + "_" + scenario.channels.front().name;
     const std::filesystem::path out = args.out_dir.empty() ? std::filesystem::path("out") / ("serve_" + name)
                                                            : std::filesystem::path(args.out_dir);
+    io::LatencyMode latency = *io::parse_latency_mode(args.latency.value_or(scenario.live_latency));
+    if (latency == io::LatencyMode::Synchronous && !args.cigi)
+      throw std::runtime_error("latency mode sync is CIGI synchronous operation: it needs --cigi");
 
     std::vector<Source> sources;
     auto open = [&](const std::optional<std::string>& ep, io::Protocol p) {
@@ -280,6 +178,9 @@ int run_serve_command(const std::vector<std::string>& argv) {
     open(args.udp, io::Protocol::Native);
     open(args.cigi, io::Protocol::Cigi);
     open(args.fgfdm, io::Protocol::FgNetFdm);
+    Source* cigi_source = nullptr;
+    for (auto& src : sources)
+      if (src.protocol == io::Protocol::Cigi) cigi_source = &src;
     std::unique_ptr<io::net::UdpSender> cigi_reply;
     if (args.cigi_reply) cigi_reply = std::make_unique<io::net::UdpSender>(*args.cigi_reply);
     std::unique_ptr<io::RecordingWriter> recorder;
@@ -287,13 +188,14 @@ int run_serve_command(const std::vector<std::string>& argv) {
 
     ScenarioRunner runner(std::move(scenario), args.run);
     PoseFeed feed(runner.heightfield());
+    feed.set_latency_mode(latency);
     if (!feed.georeferenced())
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
                    "packets (CIGI, FlightGear, native geodetic) are counted as rejected\n";
     const io::Pose initial = runner.pose_at(0.0);
 #ifdef IG_WITH_MODBUS
     std::unique_ptr<ModbusLink> modbus;
-    if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, args.quiet);
+    if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, latency, args.quiet);
 #endif
     std::optional<io::Pose> last_pose;  // for freeze
 #ifdef IG_WITH_CAN
@@ -316,14 +218,45 @@ int run_serve_command(const std::vector<std::string>& argv) {
     const double start = io::net::steady_now_s();
     double next_tick = start;
     const int total = args.frames.value_or(0);
+    // capture.times_s: seconds since the IG started; the first frame at or after each.
+    std::vector<double> capture_times = runner.scenario().capture_times_s;
+    std::sort(capture_times.begin(), capture_times.end());
+    std::size_t next_capture = 0;
+    double display_lead_s = 0.0;  // frame start -> frame complete, smoothed (the latest mode's lead)
+    std::uint64_t sync_waits = 0, sync_frames = 0;
+    std::optional<std::array<std::uint8_t, io::wire::kCigiStartOfFrameSize>> last_sof;
+    auto poll_source = [&](Source& src, std::size_t max_datagrams) {
+      return src.socket->poll(
+          [&](std::span<const std::uint8_t> d, double t, const sockaddr_in&) {
+            if (recorder) recorder->write(src.protocol, d, t);
+            feed.intake().handle(src.protocol, d, t);
+          },
+          max_datagrams);
+    };
     for (int k = 0;; ++k) {
+      const bool sync = latency == io::LatencyMode::Synchronous && cigi_source;
+      if (sync) {
+        // CIGI synchronous operation: this frame is the host's next IG
+        // Control. Read the CIGI socket one datagram at a time until one
+        // carries it; while the host is silent, repeat the last Start Of Frame
+        // every 0.25 s so a host that waits for it can (re)start.
+        const std::uint64_t before = feed.intake().ig_controls();
+        while (feed.intake().ig_controls() == before && !g_stop) {
+          if (poll_source(*cigi_source, 1) > 0) continue;
+          if (args.seconds && io::net::steady_now_s() - start >= *args.seconds) break;
+          if (!cigi_source->socket->wait_readable(0.25)) {
+            ++sync_waits;
+            if (cigi_reply && last_sof) cigi_reply->send(*last_sof);
+          }
+        }
+        // No host frame came (stopped, or --seconds ran out): no frame for it.
+        if (feed.intake().ig_controls() == before) break;
+        ++sync_frames;
+      }
       // Poll every source: whatever has arrived, never waiting. The frame
       // starts after, so every receive time is in its past.
       for (auto& src : sources)
-        src.socket->poll([&](std::span<const std::uint8_t> d, double t, const sockaddr_in&) {
-          if (recorder) recorder->write(src.protocol, d, t);
-          feed.intake().handle(src.protocol, d, t);
-        });
+        if (!sync || &src != cigi_source) poll_source(src, 4096);
 #ifdef IG_WITH_CAN
       if (can) {
         can->poll([&](const io::wire::PoseMessage& m, double t, io::can::CanFormat fmt) {
@@ -344,33 +277,46 @@ int run_serve_command(const std::vector<std::string>& argv) {
 #endif
       const double frame_start = io::net::steady_now_s();
       const bool last = (args.frames && k == *args.frames - 1) ||
-                        (args.seconds && frame_start - start + period >= *args.seconds) || g_stop;
+                        (args.seconds && frame_start - start + (sync ? 0.0 : period) >= *args.seconds) || g_stop;
       // Controls take effect here, at the frame boundary, before rendering.
       bool capture = false, frozen = false;
+      while (next_capture < capture_times.size() && frame_start - start >= capture_times[next_capture]) {
+        capture = true;
+        ++next_capture;
+      }
 #ifdef IG_WITH_MODBUS
       if (modbus) {
-        capture = modbus->apply_controls();
+        const auto applied = modbus->apply_controls();
+        capture = capture || applied.capture;
         frozen = modbus->frozen();
+        if (applied.latency) {
+          if (*applied.latency == io::LatencyMode::Synchronous && !cigi_source) {
+            std::cerr << "ig serve: modbus: latency_mode 2 (CIGI synchronous) needs --cigi; keeping "
+                      << io::latency_mode_name(latency) << "\n";
+          } else {
+            latency = *applied.latency;
+            feed.set_latency_mode(latency);
+            if (!args.quiet) std::cerr << "ig serve: modbus: latency mode " << io::latency_mode_name(latency) << "\n";
+          }
+        }
       }
 #endif
       const auto t0 = std::chrono::steady_clock::now();
       // Frozen: the last pose again; the sources are still drained and counted.
-      const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial);
+      const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
       last_pose = pose;
       const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
+      const double complete = io::net::steady_now_s();  // the renderer ends with glFinish
+      feed.frame_complete(complete);
+      display_lead_s += 0.1 * (std::min(complete - frame_start, 2.0 * period) - display_lead_s);
       if (cigi_reply) {
-        const auto sof = io::wire::encode_cigi_start_of_frame(
+        last_sof = io::wire::encode_cigi_start_of_frame(
             std::uint32_t(k), feed.intake().last_host_frame().value_or(0),
             std::uint32_t(std::llround((frame_start - start) * 1e5)), io::wire::kCigiModeOperate, false);
-        cigi_reply->send(sof);
+        cigi_reply->send(*last_sof);
       }
-      double pose_age_ms = -1.0;
-      outputs.frame(runner, f, capture, last, total, [&](std::vector<stats::Cell>& row) {
-        feed.append_columns(row);
-        for (const auto& c : row)
-          if (c.name == "pose_age_ms") pose_age_ms = std::atof(c.text.c_str());
-      });
+      outputs.frame(runner, f, capture, last, total, [&](std::vector<stats::Cell>& row) { feed.append_columns(row); });
 #ifdef IG_WITH_MODBUS
       if (modbus) {
         io::control::IgStatus can_part;
@@ -384,19 +330,31 @@ int run_serve_command(const std::vector<std::string>& argv) {
           can_part.can_error_frames = std::uint32_t(cs.error_frames);
         }
 #endif
-        modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, pose_age_ms, last, can_part);
+        modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, feed.pose_age_ms(), last, can_part);
       }
 #endif
-      (void)pose_age_ms;
       if (last || (!runner.context().headless() && runner.window_closed())) break;
-      if (runner.context().headless()) {  // own rate; a window paces on vsync
+      if (runner.context().headless() && latency != io::LatencyMode::Synchronous) {
+        // Own rate; a window paces on vsync; synchronous mode on the host.
         next_tick += period;
         const double now = io::net::steady_now_s();
         if (next_tick > now) std::this_thread::sleep_for(std::chrono::duration<double>(next_tick - now));
         else next_tick = now;  // overran: do not try to catch up
+      } else {
+        next_tick = io::net::steady_now_s();
       }
     }
-    nlohmann::json extra = {{"pose_intake", feed.summary()}, {"rate_hz", args.rate_hz}};
+    std::uint64_t kernel_stamped = 0, datagrams = 0;
+    for (const auto& src : sources) {
+      kernel_stamped += src.socket->stats().kernel_timestamps;
+      datagrams += src.socket->stats().datagrams;
+    }
+    nlohmann::json extra = {{"pose_intake", feed.summary()},
+                            {"rate_hz", args.rate_hz},
+                            {"latency_mode", io::latency_mode_name(latency)},
+                            {"datagrams", datagrams},
+                            {"kernel_receive_timestamps", kernel_stamped}};
+    if (cigi_source) extra["cigi_sync"] = {{"frames", sync_frames}, {"waits", sync_waits}};
     if (recorder) extra["recording"] = {{"file", *args.record}, {"datagrams", recorder->count()}};
 #ifdef IG_WITH_CAN
     if (can) extra["can"] = can->summary();

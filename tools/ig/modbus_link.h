@@ -1,0 +1,48 @@
+#pragma once
+// ig serve's side of the Modbus server (docs/modbus.md): controls applied at
+// the frame boundary, a status snapshot published after every frame. The
+// server thread is never waited on: both are short copies under its mutex.
+// Built only with IG_WITH_MODBUS.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/control/modbus_server.h"
+#include "io/filter/pose_filter.h"
+#include "pose_feed.h"
+#include "scenario_runner.h"
+
+namespace ig::app {
+
+class ModbusLink {
+ public:
+  // initial_latency: the mode the run starts in (the latency_mode register's first value).
+  ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet);
+
+  struct Applied {
+    bool capture = false;                    // capture this frame
+    std::optional<io::LatencyMode> latency;  // latency_mode written
+  };
+  // Before rendering: freeze, wireframe, thresholds, fog, rebuilds, latency mode.
+  Applied apply_controls();
+  bool frozen() const { return frozen_; }
+
+  void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, double pose_age_ms,
+               bool last, const io::control::IgStatus& can_part);
+  nlohmann::json summary() const;
+
+ private:
+  ScenarioRunner& runner_;
+  bool quiet_;
+  io::control::IgControls active_;  // what the IG runs with (alpha, budget: as built)
+  std::unique_ptr<io::control::ModbusServer> server_;
+  bool frozen_ = false, wireframe_ = false;
+  std::vector<std::pair<double, double>> window_;  // (frame end s, frame us) of the last second
+};
+
+}  // namespace ig::app
