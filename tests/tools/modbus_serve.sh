@@ -69,7 +69,8 @@ bad "Illegal data value" mbw -t 4:float -B -r 2 -- 1.5
 bad "Illegal data value" mbw -t 4:float -B -r 2 -- 0.2 0.1
 bad "Illegal data value" mbw -t 4 -r 0 -- 2
 bad "Illegal data value" mbw -t 4:float -B -r 10 -- -5
-bad "Illegal data address" mbw -t 4 -r 13 -- 1
+bad "Illegal data value" mbw -t 4 -r 13 -- 3
+bad "Illegal data address" mbw -t 4 -r 14 -- 1
 bad "Illegal data address" mb -t 3 -r 36 -c 2 -1
 a1=$(read_hold_f32 2); a2=$(read_hold_f32 4)
 echo "after bad writes a1=$a1 a2=$a2"
@@ -89,6 +90,13 @@ fb=$(read_u32 2)
 mbw -t 4:int -B -r 8 -- 8192 > /dev/null 2>&1 || fail "level0_budget write"
 sleep 0.5
 echo "mbpoll wrote level0_budget=8192 at frame $fb"
+
+# 4c. Latency mode 1 (latest): applied at a frame boundary, the frame log says so.
+mbw -t 4 -r 13 -- 1 > /dev/null 2>&1 || fail "latency_mode write"
+for _ in $(seq 1 50); do tail -1 "$out/serve/frames.csv" | grep -q ",latest," && break; sleep 0.1; done
+tail -1 "$out/serve/frames.csv" | grep -q ",latest," || fail "latency_mode 1 not applied"
+echo "mbpoll wrote latency_mode=1: frames logged with latency_mode latest"
+mbw -t 4 -r 13 -- 0 > /dev/null 2>&1 || fail "latency_mode write back"
 
 # 5. Freeze: the pose stays while ig send keeps streaming; wireframe: flag set.
 mbw -t 4 -r 0 -- 1 > /dev/null 2>&1 || fail "freeze write"

@@ -197,8 +197,11 @@ TEST(ModbusServer, EveryControlIsWrittenAndTaken) {
   EXPECT_EQ(c.write(hold::kLevel0Budget, {0x0001, 0x0000}), 0);  // 65536
   EXPECT_EQ(c.write_f32(hold::kFogVisibility, 0.f), 0);
   EXPECT_EQ(c.write(hold::kCapture, {1}), 0);
+  EXPECT_EQ(c.write(hold::kLatencyMode, {1}), 0);
 
   auto u = server->take_controls();
+  EXPECT_TRUE(u.latency);
+  EXPECT_EQ(u.controls.latency_mode, 1);
   EXPECT_TRUE(u.controls.freeze);
   EXPECT_TRUE(u.controls.wireframe);
   EXPECT_FLOAT_EQ(u.controls.a1, 0.05f);
@@ -215,7 +218,7 @@ TEST(ModbusServer, EveryControlIsWrittenAndTaken) {
   const auto h = c.holding(0, hold::kCount);
   EXPECT_FLOAT_EQ(get_f32(&h[hold::kA1]), 0.05f);
   EXPECT_EQ(get_u32(&h[hold::kLevel0Budget]), 65536u);
-  EXPECT_EQ(server->counters().writes_applied, 7u);
+  EXPECT_EQ(server->counters().writes_applied, 8u);
 }
 
 TEST(ModbusServer, BadWritesAreRejectedAndChangeNothing) {
@@ -234,11 +237,12 @@ TEST(ModbusServer, BadWritesAreRejectedAndChangeNothing) {
   EXPECT_EQ(c.write_f32(hold::kFogVisibility, std::numeric_limits<float>::quiet_NaN()), EMBXILVAL);
   EXPECT_EQ(c.write(hold::kLevel0Budget, {0, 0}), EMBXILVAL);
   EXPECT_EQ(c.write(hold::kCapture, {7}), EMBXILVAL);
+  EXPECT_EQ(c.write(hold::kLatencyMode, {3}), EMBXILVAL);
   // Multi-register write: good freeze, bad wireframe -> all or nothing.
   EXPECT_EQ(c.write(hold::kFreeze, {1, 5}), EMBXILVAL);
   // Outside the map.
   EXPECT_EQ(c.write(hold::kCount, {0}), EMBXILADD);
-  EXPECT_EQ(c.write(hold::kCapture, {0, 0}), EMBXILADD);
+  EXPECT_EQ(c.write(hold::kLatencyMode, {0, 0}), EMBXILADD);
   EXPECT_EQ(c.write(1000, {0}), EMBXILADD);
   std::uint16_t r[4];
   EXPECT_EQ(modbus_read_input_registers(c.ctx, in::kCount - 1, 2, r), -1);
