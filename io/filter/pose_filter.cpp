@@ -321,6 +321,17 @@ glm::dvec3 PoseFilter::clamp_omega(glm::dvec3 w) {
   return w * (limit / len);
 }
 
+// The sample to difference the newest against: the newest one at least
+// 0.9 packet intervals older (two samples squeezed together by the network
+// or the sender clock's minimum step would overstate the rate), else the
+// one before the newest.
+const PoseFilter::Entry& PoseFilter::derive_base() const {
+  const double newest = at(count_ - 1).t;
+  for (int k = count_ - 2; k >= 0; --k)
+    if (newest - at(k).t >= 0.9 * interval_) return at(k);
+  return at(count_ - 2);
+}
+
 // Differencing: the step is floored at a fraction of the packet interval (two
 // poses stamped microseconds apart must not make a huge velocity) and the
 // result clamped to physical limits.
@@ -328,7 +339,7 @@ glm::dvec3 PoseFilter::extrap_velocity() {
   const Entry& n = at(count_ - 1);
   if (n.has_vel) return n.vel;
   if (!opt_.derive_missing_rates || count_ < 2) return glm::dvec3(0.0);
-  const Entry& p = at(count_ - 2);
+  const Entry& p = derive_base();
   const double h = n.t - p.t;
   if (!(h > 0.0) || h > kMaxDiffGapS) return glm::dvec3(0.0);
   return clamp_velocity((n.pos - p.pos) / std::max(h, opt_.min_derive_step_fraction * interval_));
@@ -338,7 +349,7 @@ glm::dvec3 PoseFilter::extrap_omega() {
   const Entry& n = at(count_ - 1);
   if (n.has_omega) return n.omega;
   if (!opt_.derive_missing_rates || count_ < 2) return glm::dvec3(0.0);
-  const Entry& p = at(count_ - 2);
+  const Entry& p = derive_base();
   const double h = n.t - p.t;
   if (!(h > 0.0) || h > kMaxDiffGapS) return glm::dvec3(0.0);
   return clamp_omega(quat::log_rotvec(glm::conjugate(p.att) * n.att) /

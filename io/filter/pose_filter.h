@@ -212,6 +212,7 @@ class PoseFilter {
   void note_offset(double t, double recv);
   void note_seen(std::uint32_t seq, double t);
   bool seen(std::uint32_t seq, double t) const;
+  const Entry& derive_base() const;
   glm::dvec3 extrap_velocity();
   glm::dvec3 extrap_omega();
   FilteredPose interpolate(const Entry& a, const Entry& b, double tau) const;
