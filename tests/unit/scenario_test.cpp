@@ -207,7 +207,9 @@ TEST(Scenario, Defaults) {
   EXPECT_DOUBLE_EQ(s.time_step_s, 1.0 / 60.0);
   EXPECT_DOUBLE_EQ(s.duration_s, 4.0);  // last key time
   EXPECT_TRUE(s.capture_times_s.empty());
+  EXPECT_EQ(s.live_latency, "smooth");
   EXPECT_EQ(scenario_frame_count(s), 241);
+  EXPECT_EQ(parse_scenario(doc(R"("live": {"latency": "latest"})")).live_latency, "latest");
 
   // Unnamed channels after the first get distinct names.
   const Scenario c = parse_scenario(doc(R"("channels": [{}, {"heading_offset_deg": 30}])"));
@@ -303,6 +305,8 @@ TEST(Scenario, ErrorsNameTheirKey) {
       {"capture after end", doc(R"("capture": {"times_s": [0, 5]})"), {"capture.times_s[1]", "[0, 4]"}},
       {"capture negative", doc(R"("time": {"duration_s": 10}, "capture": {"times_s": [-1]})"), {"capture.times_s[0]"}},
       {"no channels", doc(R"("channels": [])"), {"channels", "at least one"}},
+      {"latency mode", doc(R"("live": {"latency": "fast"})"), {"live.latency", "smooth", "fast"}},
+      {"live key", doc(R"("live": {"delay": 1})"), {"live", "delay"}},
       {"duplicate channel names", doc(R"("channels": [{"name": "a"}, {"name": "a"}])"), {"channels[1].name", "duplicate"}},
       {"missing terrain", R"({"path": {"keys": [{"t": 0, "position": [0,0,0]}]}})", {"terrain", "missing"}},
       {"missing path", R"({"terrain": {"generator": {}}})", {"path", "missing"}},
