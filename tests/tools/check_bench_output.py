@@ -18,7 +18,8 @@ COLUMNS = [
     "frame_ms_median", "frame_ms_p95", "lod_ms_median", "triangles_median", "error_samples",
     "horizon_mean_px", "horizon_max_px", "depth_rel_p95", "depth_rel_max", "psnr_db",
     "holes_mean", "hole_fraction", "interior_holes_mean", "enclosed_holes_mean", "bound_px_median",
-    "bound_px_max",
+    "bound_px_max", "vs_invocations_median", "fs_invocations_median", "primitives_median", "draw_calls_median",
+    "upload_bytes_median",
 ]
 TEXT = {"method", "knob_name", "knob_unit"}
 MAY_BE_EMPTY = {"knob_value", "bound_px_median", "bound_px_max"}

@@ -318,7 +318,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
       const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
 
       renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
-      std::vector<double> frame_ms, lod_ms, triangles, bounds, depth_p95;
+      std::vector<double> frame_ms, lod_ms, triangles, bounds, depth_p95, vs, fs, prims, draws, uploads;
       double horizon_sum = 0.0, sq_sum = 0.0, samples_px = 0.0, holes = 0.0, interior_holes = 0.0, enclosed_holes = 0.0,
              ref_px = 0.0;
       size_t next_sample = 0;
@@ -330,14 +330,21 @@ int run_bench_command(const std::vector<std::string>& argv) {
         frame_ms.push_back(ms);
         lod_ms.push_back(vr.timings.lod_ms);
         triangles.push_back(double(vr.method.triangles));
-        frames_csv.add_row({{"method", v.method},
-                            knob_cell,
-                            {"frame", frames[i]},
-                            {"frame_ms", ms},
-                            {"lod_ms", vr.timings.lod_ms},
-                            {"terrain_ms", vr.timings.terrain_ms},
-                            {"sky_ms", vr.timings.sky_ms},
-                            {"triangles", vr.method.triangles}});
+        vs.push_back(double(vr.total.vs_invocations));
+        fs.push_back(double(vr.total.fs_invocations));
+        prims.push_back(double(vr.total.primitives));
+        draws.push_back(double(vr.total.draw_calls));
+        uploads.push_back(double(vr.total.bytes_uploaded));
+        std::vector<stats::Cell> frame_row = {{"method", v.method},
+                                              knob_cell,
+                                              {"frame", frames[i]},
+                                              {"frame_ms", ms},
+                                              {"lod_ms", vr.timings.lod_ms},
+                                              {"terrain_ms", vr.timings.terrain_ms},
+                                              {"sky_ms", vr.timings.sky_ms},
+                                              {"triangles", vr.method.triangles}};
+        append_work_columns(frame_row, vr, /*per_pass=*/false);
+        frames_csv.add_row(frame_row);
         if (next_sample < sample_pos.size() && sample_pos[next_sample] == i) {
           ++next_sample;
           if (reference_camera[i].position != camera.position)
@@ -380,6 +387,11 @@ int run_bench_command(const std::vector<std::string>& argv) {
       row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
       row.lod_ms_median = stats::percentiles(lod_ms).median;
       row.triangles_median = stats::percentiles(triangles).median;
+      row.vs_invocations_median = stats::percentiles(vs).median;
+      row.fs_invocations_median = stats::percentiles(fs).median;
+      row.primitives_median = stats::percentiles(prims).median;
+      row.draw_calls_median = stats::percentiles(draws).median;
+      row.upload_bytes_median = stats::percentiles(uploads).median;
       row.error_samples = n;
       row.horizon_mean_px = n ? horizon_sum / n : 0.0;
       row.depth_rel_p95 = stats::percentiles(depth_p95).median;

@@ -120,7 +120,8 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
   o << "method,knob_name,knob_value,knob_unit,is_default,build_ms,frames,frame_ms_median,frame_ms_p95,"
        "lod_ms_median,triangles_median,error_samples,horizon_mean_px,horizon_max_px,depth_rel_p95,"
        "depth_rel_max,psnr_db,holes_mean,hole_fraction,interior_holes_mean,enclosed_holes_mean,bound_px_median,"
-       "bound_px_max\n";
+       "bound_px_max,vs_invocations_median,fs_invocations_median,primitives_median,draw_calls_median,"
+       "upload_bytes_median\n";
   for (const auto& r : rows) {
     o << csv_field(r.method) << ',' << (r.knob ? csv_field(r.knob->name) : "") << ','
       << (r.knob ? num(r.knob->value) : "") << ',' << (r.knob ? csv_field(r.knob->unit) : "") << ','
@@ -129,7 +130,10 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
       << ',' << fmt("%.10g", r.triangles_median) << ',' << r.error_samples << ',' << num(r.horizon_mean_px) << ','
       << num(r.horizon_max_px) << ',' << num(r.depth_rel_p95) << ',' << num(r.depth_rel_max) << ','
       << num(r.psnr_db) << ',' << num(r.holes_mean) << ',' << num(r.hole_fraction) << ','
-      << num(r.interior_holes_mean) << ',' << num(r.enclosed_holes_mean) << ',' << opt(r.bound_px_median) << ',' << opt(r.bound_px_max) << '\n';
+      << num(r.interior_holes_mean) << ',' << num(r.enclosed_holes_mean) << ',' << opt(r.bound_px_median) << ','
+      << opt(r.bound_px_max) << ',' << fmt("%.10g", r.vs_invocations_median) << ','
+      << fmt("%.10g", r.fs_invocations_median) << ',' << fmt("%.10g", r.primitives_median) << ','
+      << fmt("%.10g", r.draw_calls_median) << ',' << fmt("%.10g", r.upload_bytes_median) << '\n';
   }
 }
 
@@ -173,6 +177,17 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
       << " | " << fmt("%.1f", r.holes_mean) << " | "
       << (r.bound_px_median ? fmt("%.2f", *r.bound_px_median) + " / " + fmt("%.2f", *r.bound_px_max) : "none")
       << " |\n";
+
+  o << "\n## Work per frame\n\n"
+    << "Hardware-independent work, medians over the frames: vertex and fragment shader invocations and "
+       "primitives submitted (pipeline statistics queries, every pass including the sky), draw calls, bytes "
+       "uploaded to the GPU. docs/bench.md.\n\n"
+    << "| method | knob | vertex invocations | fragment invocations | primitives | draw calls | bytes uploaded |\n"
+    << "|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    o << "| " << r.method << " | " << knob_text(r) << " | " << fmt("%.0f", r.vs_invocations_median) << " | "
+      << fmt("%.0f", r.fs_invocations_median) << " | " << fmt("%.0f", r.primitives_median) << " | "
+      << fmt("%.0f", r.draw_calls_median) << " | " << fmt("%.0f", r.upload_bytes_median) << " |\n";
 
   o << "\n## Matched horizon error\n\n";
   if (!target_px) {

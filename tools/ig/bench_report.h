@@ -22,6 +22,10 @@ struct BenchRow {
   double frame_ms_median = 0.0, frame_ms_p95 = 0.0;
   double lod_ms_median = 0.0;
   double triangles_median = 0.0;
+  // Hardware-independent work per frame (medians): shader invocations and
+  // primitives from pipeline statistics queries, draw calls, bytes uploaded.
+  double vs_invocations_median = 0.0, fs_invocations_median = 0.0, primitives_median = 0.0;
+  double draw_calls_median = 0.0, upload_bytes_median = 0.0;
   int error_samples = 0;
   double horizon_mean_px = 0.0;  // mean over samples of each frame's column mean
   double horizon_max_px = 0.0;   // max over samples

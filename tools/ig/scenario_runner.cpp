@@ -132,7 +132,24 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
       {"roll_deg", hpr.roll_deg},
   };
   for (const auto& [name, value] : m.columns) row.emplace_back(name, value);
+  append_work_columns(row, ch.last, /*per_pass=*/true);
   return row;
+}
+
+void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult& v, bool per_pass) {
+  auto n = [](std::uint64_t x) { return static_cast<long long>(x); };
+  row.emplace_back("vs_invocations", n(v.total.vs_invocations));
+  row.emplace_back("fs_invocations", n(v.total.fs_invocations));
+  row.emplace_back("primitives", n(v.total.primitives));
+  row.emplace_back("draw_calls", n(v.total.draw_calls));
+  row.emplace_back("upload_bytes", n(v.total.bytes_uploaded));
+  if (!per_pass) return;
+  for (const auto& p : v.passes) {
+    row.emplace_back(p.name + "_vs", n(p.vs_invocations));
+    row.emplace_back(p.name + "_fs", n(p.fs_invocations));
+    row.emplace_back(p.name + "_prims", n(p.primitives));
+    row.emplace_back(p.name + "_draws", n(p.draw_calls));
+  }
 }
 
 void ScenarioRunner::rebuild_method(const io::TwoLevelSpec& twolevel) {

@@ -53,6 +53,11 @@ struct FrameResult {
 // The scenario's two-level settings as method options (what make_method takes).
 render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& spec);
 
+// The frame's work counters as log columns: totals (vs_invocations,
+// fs_invocations, primitives, draw_calls, upload_bytes), then with per_pass
+// <pass>_vs, <pass>_fs, <pass>_prims, <pass>_draws for every pass.
+void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult& view, bool per_pass);
+
 // One frames.csv row for a channel; wall_ms = pose + render + readback + present.
 std::vector<stats::Cell> frame_log_row(const FrameResult& frame, const ChannelView& channel,
                                        double readback_ms, double present_ms);

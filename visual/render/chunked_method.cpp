@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "gl/work_counters.h"
+
 namespace ig::render {
 
 namespace {
@@ -157,6 +159,7 @@ MethodFrameStats ChunkedMethod::draw(const Camera& camera, const gl::RenderTarge
       glProgramUniform1i(program_.id(), loc_sides, sides);
       glProgramUniform1f(program_.id(), loc_bottom, d.skirt_bottom_m);
       glDrawElements(GL_TRIANGLES, sides ? total_indices_ : surface_indices_, GL_UNSIGNED_INT, nullptr);
+      gl::count_draw();
       stats.triangles += n.triangles;
       lmin = std::min(lmin, n.level);
       lmax = std::max(lmax, n.level);

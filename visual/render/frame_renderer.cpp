@@ -11,8 +11,18 @@ double ms_since(Clock::time_point t0) {
 }  // namespace
 
 FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
-    : scene_(scene), method_(method), sky_(shader_dir, "sky.vert", "sky.frag") {
+    : scene_(scene), method_(method), sky_(shader_dir, "sky.vert", "sky.frag"), recorder_([&] {
+        auto names = method.pass_names();
+        names.push_back("sky");
+        return names;
+      }()) {
   glCreateVertexArrays(1, &empty_vao_);
+  method_.set_pass_recorder(&recorder_);
+}
+
+FrameRenderer::~FrameRenderer() {
+  method_.set_pass_recorder(nullptr);
+  glDeleteVertexArrays(1, &empty_vao_);
 }
 
 ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTarget& target) {
@@ -20,6 +30,8 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   // and see the scene's Earth curvature through the camera.
   const Camera camera = scene_.local_camera(world_camera);
   ViewResult r;
+  recorder_.begin_frame();
+  const gl::WorkTally at_start = gl::work_tally();
   method_.set_viewport(target.width(), target.height());
   auto t0 = Clock::now();
   method_.update(camera);
@@ -37,7 +49,9 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   glClearDepth(0.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  recorder_.begin(method_.pass_names().front());  // a multi-pass method opens its own as it goes
   r.method = method_.draw(camera, target);
+  recorder_.end();
   if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glFinish();
   r.timings.terrain_ms = ms_since(t0);
@@ -52,10 +66,23 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   glDepthFunc(GL_GEQUAL);  // only where the depth buffer still holds the clear value
   glDepthMask(GL_FALSE);
   glBindVertexArray(empty_vao_);
+  recorder_.begin("sky");
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::count_draw();
+  recorder_.end();
   glDepthMask(GL_TRUE);
   glFinish();
   r.timings.sky_ms = ms_since(t0);
+  r.passes = recorder_.read();
+  r.total.name = "total";
+  for (const auto& p : r.passes) {
+    r.total.vs_invocations += p.vs_invocations;
+    r.total.fs_invocations += p.fs_invocations;
+    r.total.primitives += p.primitives;
+  }
+  // Uploads in update() (outside every pass) count too.
+  r.total.draw_calls = gl::work_tally().draw_calls - at_start.draw_calls;
+  r.total.bytes_uploaded = gl::work_tally().bytes_uploaded - at_start.bytes_uploaded;
   if (!r.method.passes.empty()) r.method.passes += "+";
   r.method.passes += "sky";
   return r;

@@ -6,6 +6,7 @@
 
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
+#include "gl/work_counters.h"
 #include "render/camera.h"
 #include "render/terrain_method.h"
 #include "render/terrain_scene.h"
@@ -21,11 +22,17 @@ struct ViewTimings {
 struct ViewResult {
   MethodFrameStats method;
   ViewTimings timings;
+  // Work of this frame: per pass (the method's passes, then "sky") and in all.
+  std::vector<gl::PassWork> passes;
+  gl::PassWork total;
 };
 
 class FrameRenderer {
  public:
   FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
   ViewResult render(const Camera& camera, const gl::RenderTarget& target);
   // Terrain drawn as lines (glPolygonMode GL_LINE) instead of filled; the sky stays filled.
   void set_wireframe(bool on) { wireframe_ = on; }
@@ -35,6 +42,7 @@ class FrameRenderer {
   const TerrainScene& scene_;
   TerrainMethod& method_;
   gl::ShaderProgram sky_;
+  gl::PassRecorder recorder_;
   GLuint empty_vao_ = 0;
   bool wireframe_ = false;
 };

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "lod/chunk_quadtree.h"
+#include "gl/work_counters.h"
 
 namespace ig::render {
 
@@ -145,6 +146,7 @@ MethodFrameStats GeoMipMapMethod::draw(const Camera& camera, const gl::RenderTar
       glProgramUniform2i(program_.id(), loc_origin, b.i0, b.j0);
       glProgramUniform3f(program_.id(), loc_rel, float(rel.x), float(rel.y), float(rel.z));
       glDrawElements(GL_TRIANGLES, ix.count, GL_UNSIGNED_SHORT, nullptr);
+      gl::count_draw();
       stats.triangles += d.triangles;
       stitched += d.config.stitched();
       lmin = std::min(lmin, d.config.level);

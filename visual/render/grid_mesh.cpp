@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "gl/work_counters.h"
+
 namespace ig::render {
 
 GridMesh::GridMesh(int n) : n_(n) {
@@ -48,6 +50,7 @@ GridMesh::~GridMesh() {
 void GridMesh::draw() const {
   glBindVertexArray(vao_);
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+  gl::count_draw();
 }
 
 void GridMesh::draw_quadrant(int q) const {
@@ -55,6 +58,7 @@ void GridMesh::draw_quadrant(int q) const {
   glBindVertexArray(vao_);
   glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,
                  reinterpret_cast<const void*>(std::size_t(q) * std::size_t(count) * sizeof(std::uint32_t)));
+  gl::count_draw();
 }
 
 }  // namespace ig::render

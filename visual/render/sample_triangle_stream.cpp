@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/work_counters.h"
+
 namespace ig::render {
 
 SampleTriangleStream::SampleTriangleStream(const std::string& shader_dir)
@@ -29,6 +31,7 @@ void SampleTriangleStream::draw(const std::vector<glm::u16vec2>& vertices, const
   if (bytes > capacity_) capacity_ = std::max<GLsizeiptr>(bytes + bytes / 2, 1 << 16);
   glNamedBufferData(vbo_, capacity_, nullptr, GL_STREAM_DRAW);
   glNamedBufferSubData(vbo_, 0, bytes, vertices.data());
+  gl::count_upload(std::uint64_t(bytes));
 
   const auto& hf = scene.heightfield();
   const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
@@ -41,6 +44,7 @@ void SampleTriangleStream::draw(const std::vector<glm::u16vec2>& vertices, const
                                        camera.position.y - eye_sample.y * spacing.y, camera.position.z));
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices.size()));
+  gl::count_draw();
 }
 
 }  // namespace ig::render

@@ -7,10 +7,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "gl/render_target.h"
+#include "gl/work_counters.h"
 #include "render/camera.h"
 #include "render/terrain_scene.h"
 
@@ -51,6 +53,13 @@ class TerrainMethod {
 
   // The knob and its value in use (nullopt: the method has none, e.g. reference).
   virtual std::optional<ErrorKnob> knob() const { return std::nullopt; }
+  // The passes draw() runs, in order, for the work counters (fixed for the
+  // run). A method with one pass needs nothing: FrameRenderer opens "terrain".
+  virtual std::vector<std::string> pass_names() const { return {"terrain"}; }
+  // FrameRenderer's pass recorder; a method with several passes opens each
+  // with begin_pass() (no-op without a recorder).
+  void set_pass_recorder(gl::PassRecorder* recorder) { passes_ = recorder; }
+
   // The method's own bound on the screen-space geometric error of the last
   // update(), in pixels, for this camera and a viewport viewport_height_px
   // tall (nullopt: it claims none). The reference claims 0.
@@ -59,6 +68,14 @@ class TerrainMethod {
     (void)viewport_height_px;
     return std::nullopt;
   }
+
+ protected:
+  void begin_pass(std::string_view name) {
+    if (passes_) passes_->begin(name);
+  }
+
+ private:
+  gl::PassRecorder* passes_ = nullptr;
 };
 
 // Pixels per radian at the centre of a viewport viewport_height_px tall: a

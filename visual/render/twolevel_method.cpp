@@ -194,6 +194,8 @@ TwoLevelMethod::~TwoLevelMethod() {
   for (auto& pair : queries_) glDeleteQueries(2, pair);
 }
 
+std::vector<std::string> TwoLevelMethod::pass_names() const { return {"level1", "band", "level0", "count"}; }
+
 std::vector<std::string> TwoLevelMethod::column_names() const {
   return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit"};
 }
@@ -300,6 +302,10 @@ void TwoLevelMethod::update(const Camera& camera) {
       glm::dvec3(std::max(g0.x, 0) * hf.spacing_x_m, std::max(g0.y, 0) * hf.spacing_y_m, mm.lo) - camera.position,
       glm::dvec3(std::min(g1.x, hf.width - 1) * hf.spacing_x_m, std::min(g1.y, hf.height - 1) * hf.spacing_y_m,
                  mm.hi) - camera.position);
+  // The rest of the frame's CPU work, so it counts as LOD time: the seam
+  // walls' heights and which Level0 triangles to draw (draw() uploads them).
+  if (!visible_blocks_.empty()) update_walls(meshes_for(n, band_w_), n);
+  classify_level0(n);
 }
 
 void TwoLevelMethod::ensure_band_target(int width, int height) {
@@ -331,6 +337,7 @@ void TwoLevelMethod::upload_beta_template(int n, int band_w) {
     glTextureParameteri(beta_tex_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
   glTextureSubImage2D(beta_tex_, 0, 0, 0, kSize, kSize, GL_RED, GL_FLOAT, beta.data());
+  gl::count_upload(std::uint64_t(beta.size() * sizeof(float)));
   beta_for_ = {n, band_w};
 }
 
@@ -348,7 +355,6 @@ void TwoLevelMethod::update_walls(SizeMeshes& m, int n) {
     m.wall_z[2 * k] = {1.0f, std::max(h0, h1)};
     m.wall_z[2 * k + 1] = {1.0f, std::min(h0, h1) - kBelow};
   }
-  glNamedBufferSubData(m.wall_vbo[1], 0, GLsizeiptr(m.wall_z.size() * sizeof(glm::vec2)), m.wall_z.data());
 }
 
 void TwoLevelMethod::classify_level0(int n) {
@@ -371,7 +377,6 @@ void TwoLevelMethod::classify_level0(int n) {
   level0_outside_indices_ = GLsizei(out.size());
   level0_crossing_indices_ = GLsizei(crossing.size());
   out.insert(out.end(), crossing.begin(), crossing.end());
-  if (!out.empty()) glNamedBufferSubData(level0_ibo_, 0, GLsizeiptr(out.size() * 4), out.data());
 }
 
 MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarget& target) {
@@ -388,6 +393,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
 
   if (terrain_visible_) {
     // Pass 1: Level1 blocks (+ walls) into the frame, alpha 1.
+    begin_pass("level1");
     if (!visible_blocks_.empty()) {
       grid_program_.use();
       scene_.bind_common(grid_program_, camera);
@@ -399,15 +405,19 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       }
       level1_tris = 2LL * kBlockQuads * kBlockQuads * (long long)visible_blocks_.size();
       SizeMeshes& m = meshes_for(n, band_w_);
-      update_walls(m, n);
+      const GLsizeiptr wall_bytes = GLsizeiptr(m.wall_z.size() * sizeof(glm::vec2));
+      glNamedBufferSubData(m.wall_vbo[1], 0, wall_bytes, m.wall_z.data());
+      gl::count_upload(std::uint64_t(wall_bytes));
       grid_program_.set("u_origin", origin_);
       grid_program_.set("u_origin_rel", rel(origin_));
       glBindVertexArray(m.wall_vao);
       glDrawElements(GL_TRIANGLES, m.wall_indices, GL_UNSIGNED_INT, nullptr);
+      gl::count_draw();
       passes.push_back("level1");
     }
 
     // Pass 2: band into its own RGBA16F target (uv relative to the centre, beta, mask).
+    begin_pass("band");
     ensure_band_target(target.width(), target.height());
     if (band_visible_) {  // else Level0 ignores the band target (u_band_valid), so no clear either
       const GLuint band_fbo = band_target_->fbo();
@@ -428,13 +438,19 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       band_program_.set("u_origin_rel", rel(origin_));
       glBindVertexArray(m.ring_vao);
       glDrawElements(GL_TRIANGLES, m.ring_indices, GL_UNSIGNED_INT, nullptr);
+      gl::count_draw();
       band_tris = m.ring_indices / 3;
       passes.push_back("band");
     }
 
     // Pass 3: Level0 into the frame, outside the Level1 square, depth-tested.
+    begin_pass("level0");
     target.bind();
-    classify_level0(n);
+    if (!level0_frame_indices_.empty()) {
+      const GLsizeiptr bytes = GLsizeiptr(level0_frame_indices_.size() * 4);
+      glNamedBufferSubData(level0_ibo_, 0, bytes, level0_frame_indices_.data());
+      gl::count_upload(std::uint64_t(bytes));
+    }
     const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
     const glm::ivec2 eye_sample(int(std::floor(camera.position.x / spacing.x)),
                                 int(std::floor(camera.position.y / spacing.y)));
@@ -459,6 +475,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
         program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
         program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
         glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * 4));
+        gl::count_draw();
       }
       first += count;
     }
@@ -467,6 +484,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
 
     // Coverage count for next frame's size decision (results read next frame).
     // Every 4th pixel each way: 1/16 of the fragments; both counts use the same samples.
+    begin_pass("count");
     constexpr int kStep = 4;
     const int cw = (target.width() + kStep - 1) / kStep, ch = (target.height() + kStep - 1) / kStep;
     glBindFramebuffer(GL_FRAMEBUFFER, count_fbo_);
@@ -483,6 +501,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       count_program_.set("u_threshold", k == 0 ? 0.75f : 0.25f);
       glBeginQuery(GL_SAMPLES_PASSED, queries_[parity_][k]);
       glDrawArrays(GL_TRIANGLES, 0, 3);
+      gl::count_draw();
       glEndQuery(GL_SAMPLES_PASSED);
     }
     query_pending_[parity_] = true;

@@ -44,6 +44,7 @@ class TwoLevelMethod final : public TerrainMethod {
   ~TwoLevelMethod() override;
   std::string name() const override { return "twolevel"; }
   std::vector<std::string> column_names() const override;
+  std::vector<std::string> pass_names() const override;
   void update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   std::optional<ErrorKnob> knob() const override {

@@ -1,0 +1,83 @@
+#include "gl/work_counters.h"
+
+#include <stdexcept>
+
+namespace ig::gl {
+namespace {
+constexpr std::array<GLenum, 3> kTargets = {GL_VERTEX_SHADER_INVOCATIONS, GL_FRAGMENT_SHADER_INVOCATIONS,
+                                            GL_PRIMITIVES_SUBMITTED};
+}  // namespace
+
+WorkTally& work_tally() {
+  thread_local WorkTally tally;
+  return tally;
+}
+
+bool PassRecorder::supported() {
+  return epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");
+}
+
+PassRecorder::PassRecorder(std::vector<std::string> pass_names)
+    : names_(std::move(pass_names)), supported_(supported()) {}
+
+PassRecorder::~PassRecorder() {
+  for (auto& s : segments_)
+    if (supported_) glDeleteQueries(3, s.queries.data());
+}
+
+void PassRecorder::begin_frame() {
+  if (active_) end();
+  used_ = 0;
+}
+
+void PassRecorder::begin(std::string_view pass) {
+  if (active_) end();
+  int index = -1;
+  for (size_t k = 0; k < names_.size(); ++k)
+    if (names_[k] == pass) index = int(k);
+  if (index < 0) throw std::logic_error("PassRecorder: pass '" + std::string(pass) + "' was not declared");
+  if (used_ == int(segments_.size())) {
+    segments_.emplace_back();
+    // glGenQueries, not glCreateQueries: Mesa 22.3 refuses the pipeline
+    // statistics targets in glCreateQueries (GL_INVALID_ENUM).
+    if (supported_) glGenQueries(3, segments_.back().queries.data());
+  }
+  Segment& s = segments_[used_];
+  s.pass = index;
+  s.tally_at_begin = work_tally();
+  if (supported_)
+    for (int q = 0; q < 3; ++q) glBeginQuery(kTargets[q], s.queries[q]);
+  active_ = true;
+}
+
+void PassRecorder::end() {
+  if (!active_) return;
+  Segment& s = segments_[used_];
+  if (supported_)
+    for (int q = 0; q < 3; ++q) glEndQuery(kTargets[q]);
+  s.tally_at_end = work_tally();
+  ++used_;
+  active_ = false;
+}
+
+std::vector<PassWork> PassRecorder::read() {
+  if (active_) end();
+  std::vector<PassWork> out(names_.size());
+  for (size_t k = 0; k < names_.size(); ++k) out[k].name = names_[k];
+  for (int k = 0; k < used_; ++k) {
+    const Segment& s = segments_[k];
+    PassWork& w = out[s.pass];
+    if (supported_) {
+      GLuint64 v[3] = {0, 0, 0};
+      for (int q = 0; q < 3; ++q) glGetQueryObjectui64v(s.queries[q], GL_QUERY_RESULT, &v[q]);
+      w.vs_invocations += v[0];
+      w.fs_invocations += v[1];
+      w.primitives += v[2];
+    }
+    w.draw_calls += s.tally_at_end.draw_calls - s.tally_at_begin.draw_calls;
+    w.bytes_uploaded += s.tally_at_end.bytes_uploaded - s.tally_at_begin.bytes_uploaded;
+  }
+  return out;
+}
+
+}  // namespace ig::gl

@@ -1,0 +1,71 @@
+#pragma once
+// Hardware-independent work per frame, so timings taken on llvmpipe mean
+// something on a GPU too: shader invocations and primitives per pass from
+// pipeline statistics queries (GL 4.6 / GL_ARB_pipeline_statistics_query),
+// plus draw calls and bytes uploaded, tallied where the GL calls are made.
+
+#include <epoxy/gl.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ig::gl {
+
+// Draw calls and bytes uploaded by GL calls made on this thread (every draw
+// and per-frame upload site calls count_draw / count_upload).
+struct WorkTally {
+  std::uint64_t draw_calls = 0;
+  std::uint64_t bytes_uploaded = 0;
+};
+WorkTally& work_tally();
+inline void count_draw() { ++work_tally().draw_calls; }
+inline void count_upload(std::uint64_t bytes) { work_tally().bytes_uploaded += bytes; }
+
+struct PassWork {
+  std::string name;
+  std::uint64_t vs_invocations = 0;
+  std::uint64_t fs_invocations = 0;
+  std::uint64_t primitives = 0;  // primitives submitted by the pass's draws
+  std::uint64_t draw_calls = 0;
+  std::uint64_t bytes_uploaded = 0;
+};
+
+// Pipeline statistics around consecutive passes of a frame. The passes are
+// named up front (a fixed set for the run, so logs have fixed columns);
+// begin() ends the active pass, so passes never nest and a pass may run in
+// several stretches (their counts add up). Results are read after the
+// frame's glFinish, so reading never stalls the pipeline.
+class PassRecorder {
+ public:
+  explicit PassRecorder(std::vector<std::string> pass_names);
+  ~PassRecorder();
+  PassRecorder(const PassRecorder&) = delete;
+  PassRecorder& operator=(const PassRecorder&) = delete;
+
+  // The context offers pipeline statistics (else invocations and primitives read 0).
+  static bool supported();
+
+  void begin_frame();
+  void begin(std::string_view pass);  // throws std::logic_error for a name not given at construction
+  void end();
+  // Per pass, in construction order (passes that did not run read 0).
+  std::vector<PassWork> read();
+  const std::vector<std::string>& pass_names() const { return names_; }
+
+ private:
+  struct Segment {
+    int pass = 0;
+    std::array<GLuint, 3> queries{};
+    WorkTally tally_at_begin, tally_at_end;
+  };
+  std::vector<std::string> names_;
+  std::vector<Segment> segments_;  // grows to the most stretches a frame used; reused
+  int used_ = 0;
+  bool active_ = false;
+  bool supported_ = false;
+};
+
+}  // namespace ig::gl
