@@ -85,6 +85,7 @@ void PoseFilter::clear_stream() {
   offset_ = jitter_ = 0.0;
   seen_next_ = seen_count_ = 0;
   clock_init_ = false;
+  holding_first_ = false;
   above_ = false;
   have_output_ = false;
   last_tau_ = -std::numeric_limits<double>::infinity();
@@ -92,8 +93,11 @@ void PoseFilter::clear_stream() {
 
 double PoseFilter::playout_delay_s() const {
   if (opt_.playout_delay_s >= 0.0) return opt_.playout_delay_s;
-  const double d = opt_.playout_intervals * interval_ + opt_.jitter_factor * jitter_;
-  return std::clamp(d, opt_.min_playout_delay_s, opt_.max_playout_delay_s);
+  // The interval part always counts (a 6 Hz host needs 170 ms to
+  // interpolate at all); the clamp bounds what jitter may add.
+  const double base = std::min(opt_.playout_intervals * interval_, 1.0);
+  const double d = base + std::min(opt_.jitter_factor * jitter_, opt_.max_playout_delay_s);
+  return std::max(d, opt_.min_playout_delay_s);
 }
 
 void PoseFilter::note_offset(double t, double recv) {
@@ -417,6 +421,8 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s, double display_lead
     ++counters_.holds;
     last_out_ = out;
     have_output_ = true;
+    holding_first_ = true;
+    first_t_ = at(0).t;
     return out;
   }
   // Playout point: now - (offset + delay), the sum slewed for a smooth timeline.
@@ -424,6 +430,11 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s, double display_lead
   const double target = offset_ + delay;
   if (!clock_init_) {
     budget_ = target;
+    // Coming from the held first sample: start the timeline there and let
+    // the slew bring it to the target delay (10 % fast for a moment) rather
+    // than jump ahead by up to an interval.
+    if (holding_first_) budget_ = std::clamp(now_s - first_t_, target, target + opt_.clock_snap_s);
+    holding_first_ = false;
     clock_init_ = true;
   } else {
     const double dt = now_s - last_now_;
@@ -443,7 +454,12 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s, double display_lead
   if (opt_.latency == LatencyMode::Latest) {
     // The sender's instant when this frame reaches the screen: the receive
     // clock maps to the sender's through the (min-filtered) offset.
-    want = std::max(newest_entry.t, now_s + display_lead_s - offset_);
+    // Never further than the newest pose's age plus the lead (and the
+    // jitter): a stamp the offset estimate places too early (a clock still
+    // locking) must not throw the pose ahead.
+    const double ahead = std::min(now_s + display_lead_s - offset_ - newest_entry.t,
+                                  now_s + display_lead_s - newest_entry.recv + jitter_);
+    want = newest_entry.t + std::max(0.0, ahead);
   } else if (opt_.latency == LatencyMode::Synchronous) {
     want = newest_entry.t;  // exactly the newest pose the host sent
   }

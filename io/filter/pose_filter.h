@@ -103,8 +103,9 @@ struct PoseFilterCounters {
 struct PoseFilterOptions {
   LatencyMode latency = LatencyMode::Smooth;
   // Playout delay: >= 0 fixes it (seconds); negative (default) adapts it to
-  //   playout_intervals * packet interval + jitter_factor * jitter,
-  // clamped to [min_playout_delay_s, max_playout_delay_s]. The packet
+  //   playout_intervals * packet interval + min(jitter_factor * jitter, max_playout_delay_s),
+  // at least min_playout_delay_s (the interval part alone may exceed max_playout_delay_s:
+  // a slow host is interpolated, not extrapolated). The packet
   // interval is estimated from sender time deltas per sequence step; jitter
   // is the spread (max - min) of receive-minus-sender time over
   // offset_window_s.
@@ -238,6 +239,8 @@ class PoseFilter {
   bool interval_known_ = false;
 
   bool clock_init_ = false;
+  bool holding_first_ = false;  // the first sample of a stream is shown until a second arrives
+  double first_t_ = 0.0;
   bool above_ = false;       // packets have run above offset + clock_step_s ...
   double above_since_ = 0.0;  // ... since this sender time
   double budget_ = 0.0;  // offset + delay in effect (slewed)

@@ -92,7 +92,7 @@ TEST(PoseLatency, TimestampLessPairsThenHostStops) {
     // With the counter the pairs keep their slots. Without one, the held-up
     // packet is placed a slot late and its successor half a slot after it
     // (the minimum step): 2x speed for two intervals (docs/pose-filter.md).
-    EXPECT_LT(fastest, (with_sequence ? 1.05 : 2.5) * kSpeed);
+    EXPECT_LT(fastest, (with_sequence ? 1.15 : 2.5) * kSpeed);  // 1.1: the timeline catching up at start-up
     EXPECT_EQ(fr.back().pose.mode, FilteredPose::Holding);
     EXPECT_LE(from_last, 0.2 * kSpeed * 1.05 + 0.5);  // the 0.2 s extrapolation limit, then hold
   }

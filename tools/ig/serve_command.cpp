@@ -239,14 +239,23 @@ int run_serve_command(const std::vector<std::string>& argv) {
         // CIGI synchronous operation: this frame is the host's next IG
         // Control. Read the CIGI socket one datagram at a time until one
         // carries it; while the host is silent, repeat the last Start Of Frame
-        // every 0.25 s so a host that waits for it can (re)start.
+        // every 0.25 s so a host that waits for it can (re)start. Before the
+        // first frame that is a Start Of Frame for IG frame 0 (CigiMiniHost
+        // waits for one before its first datagram).
         const std::uint64_t before = feed.intake().ig_controls();
+        auto announce = [&] {
+          if (!cigi_reply) return;
+          if (!last_sof)
+            last_sof = io::wire::encode_cigi_start_of_frame(0, 0, 0, io::wire::kCigiModeOperate, false);
+          cigi_reply->send(*last_sof);
+        };
+        if (k == 0) announce();
         while (feed.intake().ig_controls() == before && !g_stop) {
           if (poll_source(*cigi_source, 1) > 0) continue;
           if (args.seconds && io::net::steady_now_s() - start >= *args.seconds) break;
           if (!cigi_source->socket->wait_readable(0.25)) {
             ++sync_waits;
-            if (cigi_reply && last_sof) cigi_reply->send(*last_sof);
+            announce();
           }
         }
         // No host frame came (stopped, or --seconds ran out): no frame for it.
@@ -304,6 +313,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
       const auto t0 = std::chrono::steady_clock::now();
       // Frozen: the last pose again; the sources are still drained and counted.
       const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
+      if (const std::string w = feed.take_outside_warning(); !w.empty()) std::cerr << "ig serve: " << w << "\n";
       last_pose = pose;
       const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
