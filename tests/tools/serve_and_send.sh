@@ -32,4 +32,7 @@ for _ in $(seq 1 100); do [ -f "$out/serve/frames.csv" ] && break; sleep 0.1; do
   --log "$out/send.csv" "${send_args[@]}" | tee "$out/send.log"
 wait "$pid" || { cat "$out/serve.log"; exit 1; }
 cat "$out/serve.log"
+# capture.times_s of the config: seconds since ig serve started (0 and 5 fall in a 7 s run).
+echo "serve captures: $(ls "$out/serve"/capture_*.png 2>/dev/null | wc -l) (capture.times_s inside the run: $(python3 -c "
+import json,sys; c=json.load(open(sys.argv[1])).get('capture',{}).get('times_s',[]); print(sum(1 for t in c if t < 7))" "$src/scenarios/default.json"))"
 python3 "$src/tests/tools/check_pose_follow.py" "$out/serve/frames.csv" "$out/send.csv" "${check_args[@]}"

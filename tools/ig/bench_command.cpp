@@ -35,7 +35,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
-    "                [--error-samples N] [--match-px PX] [--shader-dir DIR] [--out DIR]\n"
+    "                [--error-samples N] [--match-px PX] [--skip-pass NAME] [--shader-dir DIR] [--out DIR]\n"
     "  --methods LIST      comma-separated method names (default: all)\n"
     "  --sweep             every knob value of each method's sweep (default: its default knob only)\n"
     "  --frames N          N frames spread evenly over the flight (default: every scenario frame)\n"
@@ -43,6 +43,8 @@ constexpr const char* kUsage =
     "  --fov DEG           vertical field of view (default: the scenario's)\n"
     "  --error-samples N   frames compared with the reference (default 10, spread evenly)\n"
     "  --match-px PX       horizon error for the matched-error table (default: twolevel's default)\n"
+    "  --skip-pass NAME    cost breakdown: twolevel draws without its pass NAME (level1, band,\n"
+    "                      level0, count); repeatable. The images are then wrong on purpose.\n"
     "  --out DIR           output folder (default out/<scenario>_bench)\n"
     "Exit status: 0 ok, 1 the run failed (or the plot could not be drawn), 2 bad arguments.\n";
 
@@ -67,6 +69,7 @@ struct Args {
   std::optional<double> fov;
   int error_samples = 10;
   std::optional<double> match_px;
+  std::vector<std::string> skip_passes;  // --skip-pass (twolevel cost breakdown)
   std::string shader_dir;
   std::string out_dir;
 };
@@ -113,6 +116,7 @@ Args parse_args(const std::vector<std::string>& a) {
       args.fov = v;
     } else if (f == "--error-samples") args.error_samples = r.positive_int(f);
     else if (f == "--match-px") args.match_px = r.positive_double(f);
+    else if (f == "--skip-pass") args.skip_passes.push_back(r.value(f));
     else if (f == "--shader-dir") args.shader_dir = r.value(f);
     else if (f == "--out") args.out_dir = r.value(f);
     else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
@@ -268,7 +272,8 @@ int run_bench_command(const std::vector<std::string>& argv) {
     const auto& s = runner.scenario();
     const auto& hf = runner.heightfield();
     const int width = s.render.width, height = s.render.height;
-    const render::TwoLevelOptions tl_options = twolevel_options(s.render.twolevel);
+    render::TwoLevelOptions tl_options = twolevel_options(s.render.twolevel);
+    tl_options.skip_passes = args.skip_passes;
 
     const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
     const std::vector<int> sample_pos = sample_positions(int(frames.size()), args.error_samples);

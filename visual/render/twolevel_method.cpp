@@ -296,6 +296,13 @@ void TwoLevelMethod::update(const Camera& camera) {
       const glm::dvec3 hi((o.x + kBlockQuads) * hf.spacing_x_m, (o.y + kBlockQuads) * hf.spacing_y_m, mm.hi);
       if (frustum.intersects_box(lo - camera.position, hi - camera.position)) visible_blocks_.push_back(o);
     }
+  // Front to back, so the depth test rejects hidden Level1 fragments before
+  // they are shaded (blocks behind a nearer ridge cost rasterisation only).
+  const glm::dvec2 eye(camera.position.x / hf.spacing_x_m, camera.position.y / hf.spacing_y_m);
+  std::sort(visible_blocks_.begin(), visible_blocks_.end(), [&](glm::ivec2 a, glm::ivec2 b) {
+    const glm::dvec2 ca = glm::dvec2(a) + 0.5 * kBlockQuads - eye, cb = glm::dvec2(b) + 0.5 * kBlockQuads - eye;
+    return glm::dot(ca, ca) < glm::dot(cb, cb);
+  });
   const glm::ivec2 g0 = origin_ - band_w_, g1 = origin_ + (n - 1) + band_w_;
   const auto mm = rect_minmax(pyramid_, g0.x, g0.y, g1.x, g1.y);
   band_visible_ = frustum.intersects_box(
@@ -393,8 +400,11 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
 
   if (terrain_visible_) {
     // Pass 1: Level1 blocks (+ walls) into the frame, alpha 1.
+    auto skipped = [&](const char* pass) {
+      return std::find(options_.skip_passes.begin(), options_.skip_passes.end(), pass) != options_.skip_passes.end();
+    };
     begin_pass("level1");
-    if (!visible_blocks_.empty()) {
+    if (!visible_blocks_.empty() && !skipped("level1")) {
       grid_program_.use();
       scene_.bind_common(grid_program_, camera);
       grid_program_.set("u_alpha", 1.0f);
@@ -419,7 +429,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     // Pass 2: band into its own RGBA16F target (uv relative to the centre, beta, mask).
     begin_pass("band");
     ensure_band_target(target.width(), target.height());
-    if (band_visible_) {  // else Level0 ignores the band target (u_band_valid), so no clear either
+    if (band_visible_ && !skipped("band")) {  // else Level0 ignores the band target (u_band_valid), so no clear either
       const GLuint band_fbo = band_target_->fbo();
       glBindFramebuffer(GL_FRAMEBUFFER, band_fbo);
       const float clear_band[4] = {0, 0, 0, 0};
@@ -460,7 +470,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     GLsizeiptr first = 0;
     for (auto* program : {&level0_program_, &level0_clipped_program_}) {
       const GLsizei count = program == &level0_program_ ? level0_outside_indices_ : level0_crossing_indices_;
-      if (count > 0) {
+      if (count > 0 && !skipped("level0")) {
         program->use();
         scene_.bind_common(*program, camera);
         program->set("u_eye_sample", eye_sample);
@@ -471,7 +481,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
         program->set("u_level1_center", centre);
         program->set("u_band", 3);
         program->set("u_band_depth", 4);
-        program->set("u_band_valid", band_visible_ ? 1 : 0);
+        program->set("u_band_valid", band_visible_ && !skipped("band") ? 1 : 0);
         program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
         program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
         glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * 4));
@@ -497,14 +507,14 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     count_program_.set("u_color", 5);
     count_program_.set("u_step", kStep);
     glBindVertexArray(empty_vao_);
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < (skipped("count") ? 0 : 2); ++k) {
       count_program_.set("u_threshold", k == 0 ? 0.75f : 0.25f);
       glBeginQuery(GL_SAMPLES_PASSED, queries_[parity_][k]);
       glDrawArrays(GL_TRIANGLES, 0, 3);
       gl::count_draw();
       glEndQuery(GL_SAMPLES_PASSED);
     }
-    query_pending_[parity_] = true;
+    query_pending_[parity_] = !skipped("count");
     parity_ ^= 1;
     glEnable(GL_DEPTH_TEST);
     target.bind();
