@@ -50,6 +50,7 @@ struct TwoLevelSpec {
   int max_level1 = 1025;      // top of the Level1 ladder (33, 65, ..., 1025)
   int band_stride = 2;        // band geometry every k samples
   bool eye_guard = true;      // Level1 also covers the ground under a low eye
+  bool level0_envelope = false;  // Level0 lifted to a conservative upper envelope (no sky through it)
 };
 
 struct RenderSpec {

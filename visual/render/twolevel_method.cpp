@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "gl/gl_context.h"
+#include "lod/level0_envelope.h"
 
 namespace ig::render {
 namespace {
@@ -160,19 +162,32 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
   const auto& hf = scene.heightfield();
   level0_resolution_ = double(level0_.samples.size()) / (double(hf.width) * hf.height);
 
+  std::vector<float> lift(level0_.samples.size(), 0.0f);
+  if (options_.level0_envelope) {
+    lift = lod::level0_upper_envelope(level0_, hf, scene.earth_radius_m()).lift_m;
+    for (size_t v = 0; v < lift.size(); ++v) level0_.positions[v].z += lift[v];  // the walls' height query
+  }
+  // Per vertex: sample index (2 x i32) and lift (f32).
   std::vector<std::int32_t> samples;
-  for (const auto& s : level0_.samples) samples.insert(samples.end(), {s.x, s.y});
+  for (size_t v = 0; v < level0_.samples.size(); ++v) {
+    std::int32_t bits = 0;
+    std::memcpy(&bits, &lift[v], 4);
+    samples.insert(samples.end(), {level0_.samples[v].x, level0_.samples[v].y, bits});
+  }
   glCreateBuffers(1, &level0_vbo_);
   glNamedBufferStorage(level0_vbo_, GLsizeiptr(samples.size() * 4), samples.data(), 0);
   glCreateBuffers(1, &level0_ibo_);
   glNamedBufferStorage(level0_ibo_, GLsizeiptr(level0_.indices.size() * 4), level0_.indices.data(),
                        GL_DYNAMIC_STORAGE_BIT);
   glCreateVertexArrays(1, &level0_vao_);
-  glVertexArrayVertexBuffer(level0_vao_, 0, level0_vbo_, 0, 8);
+  glVertexArrayVertexBuffer(level0_vao_, 0, level0_vbo_, 0, 12);
   glVertexArrayElementBuffer(level0_vao_, level0_ibo_);
   glEnableVertexArrayAttrib(level0_vao_, 0);
   glVertexArrayAttribIFormat(level0_vao_, 0, 2, GL_INT, 0);
   glVertexArrayAttribBinding(level0_vao_, 0, 0);
+  glEnableVertexArrayAttrib(level0_vao_, 1);
+  glVertexArrayAttribFormat(level0_vao_, 1, 1, GL_FLOAT, GL_FALSE, 8);
+  glVertexArrayAttribBinding(level0_vao_, 1, 0);
 
   glCreateFramebuffers(1, &count_fbo_);
   glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);

@@ -36,6 +36,9 @@ struct TwoLevelOptions {
   bool gaussian_beta = false;     // beta template: linear (default) or Gaussian
   int max_level1 = 1025;          // top of the ladder (vertices a side)
   int band_stride = 2;            // band geometry every k samples (it only carries uv)
+  // Level0 lifted to a conservative upper envelope (lod/level0_envelope.h):
+  // no ridge cut below the skyline, so no sky through Level0 terrain.
+  bool level0_envelope = false;
   // For cost breakdowns only (ig bench --skip-pass): passes not drawn,
   // any of "level1", "band", "level0", "count". The image is then wrong.
   std::vector<std::string> skip_passes;
