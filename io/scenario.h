@@ -51,6 +51,7 @@ struct TwoLevelSpec {
   int band_stride = 2;        // band geometry every k samples
   bool eye_guard = true;      // Level1 also covers the ground under a low eye
   bool level0_envelope = false;  // Level0 lifted to a conservative upper envelope (no sky through it)
+  bool predict_size = true;      // Level1 size from a ray-cast prediction of R (false: the paper's steps)
 };
 
 struct RenderSpec {

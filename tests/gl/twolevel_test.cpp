@@ -307,32 +307,50 @@ TEST(TwoLevel, SkyOnlyViewRunsNoTerrainPass) {
 TEST(TwoLevel, ControllerSettlesOnASteadyView) {
   constexpr int kFrames = 200, kSettleBy = 10;
   const Scenario base = default_scenario();
-  const Scenario s = with_keys(base, {base.path.keys.front()}, AltitudeMode::AboveGround);
-  ScenarioRunner runner(s, options("twolevel", 200, 150));
-  auto& tl = twolevel(runner);
-  const auto& hf = runner.heightfield();
-  const int top = ig::lod::level1_ladder(hf.width, hf.height).back();
-  std::vector<int> sizes;
-  std::vector<double> ratios;
-  for (int k = 0; k < kFrames; ++k) {
-    runner.render_frame(0);
-    sizes.push_back(tl.level1_size());
-    ratios.push_back(tl.last_ratio());
+  for (bool predict : {true, false}) {
+    Scenario s = with_keys(base, {base.path.keys.front()}, AltitudeMode::AboveGround);
+    s.render.twolevel.predict_size = predict;
+    s.render.twolevel.eye_guard = false;  // the controller alone decides the size
+    ScenarioRunner runner(s, options("twolevel", 200, 150));
+    auto& tl = twolevel(runner);
+    const auto& hf = runner.heightfield();
+    const auto ladder = ig::lod::level1_ladder(hf.width, hf.height);
+    std::vector<int> sizes;
+    std::vector<double> ratios;
+    for (int k = 0; k < kFrames; ++k) {
+      runner.render_frame(0);
+      sizes.push_back(tl.level1_size());
+      ratios.push_back(tl.last_ratio());
+    }
+    if (!predict) EXPECT_EQ(sizes.front(), ladder.back()) << "the paper's rule starts at the largest size";
+    int changes_after = 0;
+    for (int k = kSettleBy + 1; k < kFrames; ++k) changes_after += sizes[k] != sizes[k - 1];
+    const double r = ratios.back();
+    // R one ladder size smaller, measured on the same view.
+    double r_smaller = -1.0;
+    if (sizes.back() != ladder.front()) {
+      Scenario smaller = s;
+      smaller.render.twolevel.max_level1 = sizes.back() / 2 + 1;
+      smaller.render.twolevel.predict_size = false;
+      ScenarioRunner probe(smaller, options("twolevel", 200, 150));
+      for (int k = 0; k < 3; ++k) probe.render_frame(0);
+      r_smaller = twolevel(probe).last_ratio();
+    }
+    std::printf("[controller] %s sizes:", predict ? "predicted" : "stepping ");
+    for (int k = 0; k < 16; ++k) std::printf(" %d", sizes[k]);
+    std::printf(" ... final %d, R=%.3f (one size smaller: %.3f), changes after frame %d: %d\n", sizes.back(), r,
+                r_smaller, kSettleBy, changes_after);
+    EXPECT_EQ(changes_after, 0) << "Level1 size still changing (oscillation) after frame " << kSettleBy;
+    // Settled at the smallest size that keeps R >= a1: its own R >= a1 (or
+    // the top of the ladder), one size smaller < a1 (or the bottom).
+    // The paper's rule alone only looks one step ahead with a learnt
+    // R(smaller)/R(larger) and may keep a size too large, so only the
+    // predicted controller is held to it.
+    if (predict) {
+      EXPECT_TRUE(r >= 0.5 || sizes.back() == ladder.back()) << "R=" << r;
+      EXPECT_TRUE(r_smaller < 0.5 + 0.05) << "one size smaller would do: R=" << r_smaller;
+    }
   }
-  EXPECT_EQ(sizes.front(), top) << "the first frame uses the largest ladder size";
-  int changes_after = 0;
-  for (int k = kSettleBy + 1; k < kFrames; ++k) changes_after += sizes[k] != sizes[k - 1];
-  std::printf("[controller] sizes:");
-  for (int k = 0; k < 16; ++k) std::printf(" %d", sizes[k]);
-  std::printf(" ... final %d, R=%.3f, changes after frame %d: %d\n", sizes.back(), ratios.back(), kSettleBy,
-              changes_after);
-  EXPECT_EQ(changes_after, 0) << "Level1 size still changing (oscillation) after frame " << kSettleBy;
-  // The settled ratio lies in [a1, a2] or the size is at an end of the ladder.
-  const double r = ratios.back();
-  const bool at_end = sizes.back() == top || sizes.back() == ig::lod::level1_ladder(hf.width, hf.height).front();
-  EXPECT_TRUE(at_end || (r >= 0.5 - 1e-9 && r <= 0.8 + 1e-9) || r * 0.35 < 0.5) << "R=" << r;
-  record("controller_final_size", sizes.back());
-  record("controller_final_ratio", r);
 }
 
 // ------------------------------------------------------------ 4. no swimming --

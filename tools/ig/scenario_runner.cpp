@@ -26,6 +26,7 @@ render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& t) {
   o.band_stride = t.band_stride;
   o.eye_guard = t.eye_guard;
   o.level0_envelope = t.level0_envelope;
+  o.predict_size = t.predict_size;
   return o;
 }
 

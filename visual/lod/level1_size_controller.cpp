@@ -34,6 +34,45 @@ int Level1SizeController::update(double ratio) {
   return size();
 }
 
+int Level1SizeController::update(double ratio, const std::vector<double>& predicted) {
+  if (predicted.size() != ladder_.size()) return update(ratio);
+  // The prediction counts every terrain ray; the frame shows fewer Level0
+  // pixels than that (the coarse Level0 cuts distant ridges: sky where the
+  // rays hit), so the measured R runs higher. Model: Level0 shows a fraction
+  // h of its predicted pixels, R = r / (r + h (1 - r)); h from the last
+  // frame's pair (measured, predicted), smoothed; near R = 1 it says nothing.
+  if (ratio > 0.0 && ratio < 0.98 && last_prediction_ > 0.0 && last_prediction_ < 0.98) {
+    const double h = (1.0 / ratio - 1.0) / (1.0 / last_prediction_ - 1.0);
+    correction_ = std::clamp(0.25 * correction_ + 0.75 * h, 0.05, 4.0);
+  }
+  auto corrected = [&](int i) {
+    const double r = predicted[size_t(i)];
+    return r <= 0.0 ? 0.0 : r / (r + correction_ * (1.0 - r));
+  };
+  int target = int(ladder_.size()) - 1;
+  for (int i = 0; i < int(ladder_.size()); ++i)
+    if (corrected(i) >= options_.a1) {
+      target = i;
+      break;
+    }
+  const int before = index_;
+  // Grow to the predicted size unless the measurement says this size is
+  // already enough (measured beats predicted for the size in use).
+  if (target > index_ && !(ratio >= options_.a1)) index_ = target;
+  // Shrink when the smaller size is predicted to keep R >= a1: at once when
+  // the measured R says this size is too big (> a2), else only with a 0.05
+  // margin (no flip-flop on a prediction at the threshold).
+  else if (target < index_ && corrected(target) >= options_.a1 + (ratio > options_.a2 ? 0.0 : 0.05)) index_ = target;
+  // The measured R says this size covers (nearly) everything but the
+  // prediction cannot tell what a smaller one would: the paper's step down.
+  else if (index_ == before && ratio > options_.a2 && index_ > 0 && (ratio > 0.98 || ratio * k_ >= options_.a1))
+    --index_;
+  last_step_ = index_ > before ? 1 : index_ < before ? -1 : 0;
+  ratio_before_ = ratio;
+  last_prediction_ = predicted[size_t(index_)];
+  return size();
+}
+
 std::vector<int> level1_ladder(int dem_width, int dem_height, int max_size) {
   const int limit = std::min({dem_width, dem_height, max_size});
   std::vector<int> ladder;

@@ -31,6 +31,14 @@ class Level1SizeController {
   // Size for this frame given last frame's ratio (negative or NaN = no
   // measurement: keep the size).
   int update(double last_ratio);
+  // The same with a prediction of this frame's R for every ladder size
+  // (lod/level1_coverage_predictor.h): the smallest size whose predicted R,
+  // corrected by what the last measurement said of the last prediction (the
+  // share of Level0 pixels the frame really shows), reaches a1 is taken at once (growing at once, shrinking only with a 0.05 margin:
+  // hysteresis). Settles on a new view in one or two frames instead of one
+  // ladder step per frame. An empty prediction falls back to update(ratio).
+  int update(double last_ratio, const std::vector<double>& predicted);
+  double correction() const { return correction_; }
   int size() const { return ladder_[index_]; }
   const std::vector<int>& ladder() const { return ladder_; }
   double shrink_factor() const { return k_; }
@@ -43,6 +51,8 @@ class Level1SizeController {
   double k_;                   // learnt R(smaller) / R(larger)
   int last_step_ = 0;          // +1 grew, -1 shrank, 0 kept (previous decision)
   double ratio_before_ = -1.0;  // R measured before the last step
+  double correction_ = 1.0;     // h: the share of predicted Level0 pixels the frames show, smoothed
+  double last_prediction_ = -1.0;  // predicted R of the size chosen last frame
 };
 
 // The ladder 33, 65, ..., 1025 limited to sizes that fit in the DEM

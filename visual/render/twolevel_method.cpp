@@ -7,6 +7,7 @@
 
 #include "gl/gl_context.h"
 #include "lod/level0_envelope.h"
+#include "lod/level1_coverage_predictor.h"
 
 namespace ig::render {
 namespace {
@@ -278,13 +279,29 @@ void TwoLevelMethod::update(const Camera& camera) {
 
   const double ratio = read_previous_ratio();
   if (ratio >= 0.0) last_ratio_ = ratio;
-  int n = controller_.update(ratio);
 
   look_at_ = lod::find_look_at_point(hf, pyramid_, camera.position, camera.forward(), camera.up(),
                                      camera.earth_radius_m);
   // Snap E to a whole sample and keep the square inside the DEM.
   int ec_i = int(std::lround(look_at_.point.x / hf.spacing_x_m));
   int ec_j = int(std::lround(look_at_.point.y / hf.spacing_y_m));
+  int n = 0;
+  if (options_.predict_size && terrain_visible_) {
+    // R for every ladder size on a 12 x 9 grid of view rays (about 0.1-0.3 ms).
+    constexpr int kRaysX = 12, kRaysY = 9;
+    prediction_rays_.clear();
+    for (int y = 0; y < kRaysY; ++y)
+      for (int x = 0; x < kRaysX; ++x)
+        prediction_rays_.push_back(camera.pixel_ray((x + 0.5) * viewport_.x / kRaysX, (y + 0.5) * viewport_.y / kRaysY,
+                                                    viewport_.x, viewport_.y));
+    const auto p = lod::predict_level1_coverage(hf, pyramid_, camera.position, prediction_rays_, camera.far_m,
+                                                {ec_i, ec_j}, controller_.ladder());
+
+    n = controller_.update(ratio, p.ratio);
+
+  } else {
+    n = controller_.update(ratio);
+  }
   eye_guarded_ = false;
   if (options_.eye_guard) apply_eye_guard(camera, n, ec_i, ec_j);
   n_ = n;

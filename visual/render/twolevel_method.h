@@ -39,6 +39,10 @@ struct TwoLevelOptions {
   // Level0 lifted to a conservative upper envelope (lod/level0_envelope.h):
   // no ridge cut below the skyline, so no sky through Level0 terrain.
   bool level0_envelope = false;
+  // Size control predicts R for every ladder size from a grid of view rays
+  // and jumps to the right size (lod/level1_coverage_predictor.h); false:
+  // the paper's one step per frame on the measured R alone.
+  bool predict_size = true;
   // For cost breakdowns only (ig bench --skip-pass): passes not drawn,
   // any of "level1", "band", "level0", "count". The image is then wrong.
   std::vector<std::string> skip_passes;
@@ -52,6 +56,7 @@ class TwoLevelMethod final : public TerrainMethod {
   std::vector<std::string> column_names() const override;
   std::vector<std::string> pass_names() const override;
   void update(const Camera& camera) override;
+  void set_viewport(int width_px, int height_px) override { viewport_ = {width_px, height_px}; }
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   std::optional<ErrorKnob> knob() const override {
     return ErrorKnob{"level0_budget", "triangles", double(options_.level0_budget)};
@@ -85,6 +90,8 @@ class TwoLevelMethod final : public TerrainMethod {
   TwoLevelOptions options_;
   gl::ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_, count_program_;
   const terrain::HeightPyramid& pyramid_;  // the scene's, shared across channels
+  glm::ivec2 viewport_{640, 480};
+  std::vector<glm::dvec3> prediction_rays_;
   lod::Level0Mesh level0_;
   lod::Level0HeightQuery level0_heights_;
   GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
