@@ -4,6 +4,12 @@
 //
 //   IG_DEM_DIR=../shared/data/dem build/bin/bench_twolevel [--fov DEG] [--size WxH]
 //       [--lat DEG --lon DEG --heading DEG] [--settle N] [--frames N] [--reference-frames N]
+//       [--stepping] [--no-eye-guard]
+//
+// R is the visible-pixel ratio the controller uses (Level1 pixels / terrain
+// pixels of the finished frame, occlusion queries). "settle" is the frames
+// after the view change until the size stopped changing. --stepping: the paper's one-step rule instead of the
+// predicted sizes; --no-eye-guard: the controller alone decides.
 //
 // Defaults: 1280x1024, FOV 15 deg (the paper's), a point in the Sierra
 // Nevada DEM's interior (37.70 N, 118.70 W), heading 270 (west, into the range).
@@ -23,6 +29,7 @@ struct Row {
   double pitch;
   int size = 0, next_size = 0;
   double ratio = 0, level0 = 0, level1 = 0, band = 0;
+  int settle_frames = 0;
   long long triangles = 0;
   double twolevel_ms = 0, reference_ms = 0;
   long long reference_triangles = 0;
@@ -49,6 +56,11 @@ int main(int argc, char** argv) {
   const int settle = int(arg_double(argc, argv, "--settle", 30));
   const int frames = int(arg_double(argc, argv, "--frames", 20));
   const int ref_frames = int(arg_double(argc, argv, "--reference-frames", 3));
+  bool stepping = false, no_guard = false;
+  for (int k = 1; k < argc; ++k) {
+    stepping = stepping || std::string(argv[k]) == "--stepping";
+    no_guard = no_guard || std::string(argv[k]) == "--no-eye-guard";
+  }
   int width = 1280, height = 1024;
   for (int k = 1; k + 1 < argc; ++k)
     if (std::string(argv[k]) == "--size") std::sscanf(argv[k + 1], "%dx%d", &width, &height);
@@ -67,6 +79,8 @@ int main(int argc, char** argv) {
     s.path.keys.push_back({double(k), {lat, lon, 100.0}, heading, -pitches[k], 0.0});
   s.time_step_s = 1.0;
   s.duration_s = double(pitches.size() - 1);
+  s.render.twolevel.predict_size = !stepping;
+  s.render.twolevel.eye_guard = !no_guard;
 
   std::vector<Row> rows(pitches.size());
   ig::app::RunOptions o;
@@ -81,9 +95,14 @@ int main(int argc, char** argv) {
                   runner.heightfield().source.c_str(), runner.heightfield().width, runner.heightfield().height,
                   tl->level0().triangle_count, tl->level0().build_ms, tl->level0().max_error_m);
       for (size_t k = 0; k < pitches.size(); ++k) {
-        for (int f = 0; f < settle; ++f) runner.render_frame(int(k));
-        std::vector<double> ms;
         Row& r = rows[k];
+        int last_size = tl->level1_size();
+        for (int f = 0; f < settle; ++f) {
+          runner.render_frame(int(k));
+          if (tl->level1_size() != last_size) r.settle_frames = f + 1;
+          last_size = tl->level1_size();
+        }
+        std::vector<double> ms;
         r.pitch = pitches[k];
         double ratio_sum = 0;
         for (int f = 0; f < frames; ++f) {
@@ -126,14 +145,16 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  std::printf("\n%dx%d, FOV %.0f deg, 100 m above ground at %.2f, %.2f, heading %.0f; settle %d frames, median of %d\n\n",
-              width, height, fov, lat, lon, heading, settle, frames);
-  std::printf("| pitch below horizon | Level1 N | R | triangles (L0 + L1 + band) | two-level ms (fps) | next N | reference ms | reference triangles | speed-up |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n%dx%d, FOV %.0f deg, 100 m above ground at %.2f, %.2f, heading %.0f; settle %d frames, median of %d; "
+              "sizes %s, eye guard %s\n\n",
+              width, height, fov, lat, lon, heading, settle, frames, stepping ? "stepped (paper)" : "predicted",
+              no_guard ? "off" : "on");
+  std::printf("| pitch below horizon | Level1 N | settle frames | R | triangles (L0 + L1 + band) | two-level ms (fps) | next N | reference ms | reference triangles | speed-up |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows)
-    std::printf("| %.0f deg | %d | %.0f %% | %lld (%.0f + %.0f + %.0f) | %.1f (%.0f) | %d | %.1f | %lld | %.1fx |\n", r.pitch, r.size,
-                100.0 * r.ratio, r.triangles, r.level0, r.level1, r.band, r.twolevel_ms, 1000.0 / r.twolevel_ms,
-                r.next_size, r.reference_ms, r.reference_triangles,
-                r.reference_ms > 0 ? r.reference_ms / r.twolevel_ms : 0.0);
+    std::printf("| %.0f deg | %d | %d | %.0f %% | %lld (%.0f + %.0f + %.0f) | %.1f (%.0f) | %d | %.1f | %lld | %.1fx |\n",
+                r.pitch, r.size, r.settle_frames, 100.0 * r.ratio, r.triangles, r.level0,
+                r.level1, r.band, r.twolevel_ms, 1000.0 / r.twolevel_ms, r.next_size, r.reference_ms,
+                r.reference_triangles, r.reference_ms > 0 ? r.reference_ms / r.twolevel_ms : 0.0);
   return 0;
 }
