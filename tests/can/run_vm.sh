@@ -34,5 +34,10 @@ if ! grep -q -a "IG_VM_RESULT case=$case" "$log"; then
   echo "run_vm: no result marker from the VM (boot failed or timed out)"
   exit 1
 fi
-# The cases' own verdicts are the per-case tests (check_case.sh).
+# The cases' own verdicts are the per-case tests (check_case.sh); this test
+# fails when no case reported at all (the program never ran in the VM).
+if ! grep -q -a -E "^case [a-z_]+: (PASS|FAIL)" "$out"; then
+  echo "run_vm: no case reported a result (the test program did not run in the VM)"
+  exit 1
+fi
 exit 0

@@ -24,7 +24,18 @@ fi
 mount -t proc proc /host/proc 2>/dev/null
 mount -t devtmpfs dev /host/dev 2>/dev/null
 mount -t sysfs sys /host/sys 2>/dev/null
+# A writable /tmp for the programs; a checkout under the host's /tmp (a CI
+# clone in /tmp/...) is bound back into it, or the tmpfs would hide it.
+keep=""
+case "$IG_WORKDIR" in /tmp/?*) keep=$(echo "$IG_WORKDIR" | cut -d/ -f3) ;; esac
+if [ -n "$keep" ]; then
+  mkdir -p /hosttmp && mount -o bind /host/tmp /hosttmp 2>/dev/null
+fi
 mount -t tmpfs tmp /host/tmp 2>/dev/null
+if [ -n "$keep" ]; then
+  mkdir -p "/host/tmp/$keep" && mount -o bind "/hosttmp/$keep" "/host/tmp/$keep" ||
+    echo "vm: cannot bind /tmp/$keep back over the tmpfs"
+fi
 chroot /host /bin/sh -c "cd '$IG_WORKDIR' && '$IG_CMD' '$IG_CASE'"
 rc=$?
 echo "IG_VM_RESULT case=$IG_CASE rc=$rc"
