@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "gl/shader_program.h"
+
 namespace ig::app {
 
 int parse_positive_int(const std::string& flag, const std::string& v) {
@@ -70,6 +72,11 @@ void ArgReader::size(const std::string& flag, int& width, int& height) {
   if (x == std::string::npos) throw UsageError(flag + ": expected WxH, got '" + v + "'");
   width = parse_positive_int(flag, v.substr(0, x));
   height = parse_positive_int(flag, v.substr(x + 1));
+}
+
+std::string default_scenario_file() {
+  if (auto dir = gl::installed_data_dir("scenarios", "default.json"); !dir.empty()) return dir + "/default.json";
+  return std::string(IG_SOURCE_DIR) + "/scenarios/default.json";
 }
 
 }  // namespace ig::app

@@ -63,6 +63,10 @@ class ArgReader {
 };
 
 int parse_positive_int(const std::string& flag, const std::string& text);
+// ig serve's config when none is given: the installed scenarios/default.json
+// (PREFIX/share/ig/scenarios), else the one beside the build's binary, else
+// the source tree's.
+std::string default_scenario_file();
 double parse_double(const std::string& flag, const std::string& text);
 
 }  // namespace ig::app

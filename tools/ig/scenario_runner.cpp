@@ -157,11 +157,9 @@ void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult
 void ScenarioRunner::rebuild_method(const io::TwoLevelSpec& twolevel) {
   scenario_.render.twolevel = twolevel;
   for (auto& ch : channels_) {
-    const bool wireframe = ch.renderer->wireframe();
-    ch.renderer.reset();
-    ch.method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, twolevel_options(twolevel));
-    ch.renderer = std::make_unique<render::FrameRenderer>(*scene_, *ch.method, options_.shader_dir);
-    ch.renderer->set_wireframe(wireframe);
+    auto method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, twolevel_options(twolevel));
+    ch.renderer->set_method(*method);  // the renderer (sky program, queries) is kept
+    ch.method = std::move(method);
   }
 }
 

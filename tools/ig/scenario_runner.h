@@ -71,6 +71,7 @@ class ScenarioRunner {
   const io::Scenario& scenario() const { return scenario_; }
   const terrain::Heightfield& heightfield() const { return heightfield_; }
   const gl::GlContext& context() const { return *context_; }
+  const std::string& shader_dir() const { return options_.shader_dir; }
   // The first channel's method (tests and benchmarks look at its state).
   render::TerrainMethod& method() { return *channels_.front().method; }
   int frame_count() const { return frame_count_; }

@@ -154,7 +154,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
   if (!parsed) return help_requested(argv) ? 0 : 2;
   const Args& args = *parsed;
   try {
-    const std::string config = args.config.empty() ? std::string(IG_SOURCE_DIR) + "/scenarios/default.json" : args.config;
+    const std::string config = args.config.empty() ? default_scenario_file() : args.config;
     io::Scenario scenario = io::load_scenario(config);
     if (args.channel) {  // one process = one channel of the config
       auto it = std::find_if(scenario.channels.begin(), scenario.channels.end(),

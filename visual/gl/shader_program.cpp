@@ -100,15 +100,20 @@ void ShaderProgram::set(const char* n, const glm::mat4& m) const {
   glProgramUniformMatrix4fv(id_, location(n), 1, GL_FALSE, glm::value_ptr(m));
 }
 
-std::string default_shader_dir() {
-  if (const char* env = std::getenv("IG_SHADER_DIR"); env && *env) return env;
+std::string installed_data_dir(const std::string& name, const std::string& probe) {
   std::vector<char> buf(4096);
   const ssize_t n = readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-  if (n > 0) {
-    std::filesystem::path exe(std::string(buf.data(), size_t(n)));
-    auto beside = exe.parent_path() / "shaders";
-    if (std::filesystem::exists(beside / "terrain.vert")) return beside.string();
-  }
+  if (n <= 0) return "";
+  const std::filesystem::path bin = std::filesystem::path(std::string(buf.data(), size_t(n))).parent_path();
+  // Build tree: beside the binary; installed: PREFIX/share/ig beside PREFIX/bin.
+  for (const auto& dir : {bin / name, bin.parent_path() / "share" / "ig" / name})
+    if (std::filesystem::exists(dir / probe)) return dir.string();
+  return "";
+}
+
+std::string default_shader_dir() {
+  if (const char* env = std::getenv("IG_SHADER_DIR"); env && *env) return env;
+  if (auto dir = installed_data_dir("shaders", "sky.vert"); !dir.empty()) return dir;
 #ifdef IG_DEFAULT_SHADER_DIR
   return IG_DEFAULT_SHADER_DIR;
 #else

@@ -46,7 +46,11 @@ class ShaderProgram {
 };
 
 // Directory holding the GLSL files: $IG_SHADER_DIR, else "shaders" beside
-// the executable, else the build tree's copy.
+// the executable (build tree), else PREFIX/share/ig/shaders for an installed
+// PREFIX/bin/ig (cmake --install), else the build tree's copy.
 std::string default_shader_dir();
+// A data folder of an installed or built ig: NAME beside the executable or
+// in ../share/ig/NAME, whichever holds the file `probe`; "" when neither.
+std::string installed_data_dir(const std::string& name, const std::string& probe);
 
 }  // namespace ig::gl

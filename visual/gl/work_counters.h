@@ -54,6 +54,12 @@ class PassRecorder {
   // Per pass, in construction order (passes that did not run read 0).
   std::vector<PassWork> read();
   const std::vector<std::string>& pass_names() const { return names_; }
+  // Another set of passes (the renderer's method changed).
+  void reset_passes(std::vector<std::string> pass_names) {
+    if (active_) end();
+    names_ = std::move(pass_names);
+    used_ = 0;
+  }
 
  private:
   struct Segment {

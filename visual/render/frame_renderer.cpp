@@ -11,18 +11,27 @@ double ms_since(Clock::time_point t0) {
 }  // namespace
 
 FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
-    : scene_(scene), method_(method), sky_(shader_dir, "sky.vert", "sky.frag"), recorder_([&] {
+    : scene_(scene), method_(&method), sky_(shader_dir, "sky.vert", "sky.frag"), recorder_([&] {
         auto names = method.pass_names();
         names.push_back("sky");
         return names;
       }()) {
   glCreateVertexArrays(1, &empty_vao_);
-  method_.set_pass_recorder(&recorder_);
+  method_->set_pass_recorder(&recorder_);
 }
 
 FrameRenderer::~FrameRenderer() {
-  method_.set_pass_recorder(nullptr);
+  method_->set_pass_recorder(nullptr);
   glDeleteVertexArrays(1, &empty_vao_);
+}
+
+void FrameRenderer::set_method(TerrainMethod& method) {
+  method_->set_pass_recorder(nullptr);
+  method_ = &method;
+  auto names = method.pass_names();
+  names.push_back("sky");
+  if (names != recorder_.pass_names()) recorder_.reset_passes(std::move(names));
+  method_->set_pass_recorder(&recorder_);
 }
 
 ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTarget& target) {
@@ -32,9 +41,9 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   ViewResult r;
   recorder_.begin_frame();
   const gl::WorkTally at_start = gl::work_tally();
-  method_.set_viewport(target.width(), target.height());
+  method_->set_viewport(target.width(), target.height());
   auto t0 = Clock::now();
-  method_.update(camera);
+  method_->update(camera);
   r.timings.lod_ms = ms_since(t0);
 
   t0 = Clock::now();
@@ -49,8 +58,8 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   glClearDepth(0.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-  recorder_.begin(method_.pass_names().front());  // a multi-pass method opens its own as it goes
-  r.method = method_.draw(camera, target);
+  recorder_.begin(method_->pass_names().front());  // a multi-pass method opens its own as it goes
+  r.method = method_->draw(camera, target);
   recorder_.end();
   if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glFinish();

@@ -37,10 +37,13 @@ class FrameRenderer {
   // Terrain drawn as lines (glPolygonMode GL_LINE) instead of filled; the sky stays filled.
   void set_wireframe(bool on) { wireframe_ = on; }
   bool wireframe() const { return wireframe_; }
+  // Draw with another method from the next frame on (a rebuild at a frame
+  // boundary): the sky program and the rest are kept, not recompiled.
+  void set_method(TerrainMethod& method);
 
  private:
   const TerrainScene& scene_;
-  TerrainMethod& method_;
+  TerrainMethod* method_;
   gl::ShaderProgram sky_;
   gl::PassRecorder recorder_;
   GLuint empty_vao_ = 0;
