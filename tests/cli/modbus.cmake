@@ -21,7 +21,7 @@ if(IG_WITH_MODBUS)
   # A port already taken: one line, exit 1.
   add_test(NAME cli.modbus.port_in_use COMMAND bash -c "
     '$<TARGET_FILE:ig>' serve --headless --udp 127.0.0.1:47321 --modbus 127.0.0.1:47322 --seconds 4 --size 64x48 --quiet --out ${IG_MODBUS_OUT}/inuse1 >/dev/null 2>&1 &
-    sleep 1.5
+    for _ in \$(seq 1 100); do (exec 3<>/dev/tcp/127.0.0.1/47322) 2>/dev/null && break; sleep 0.1; done
     '$<TARGET_FILE:ig>' serve --headless --udp 127.0.0.1:47323 --modbus 127.0.0.1:47322 --frames 1 --size 64x48 --quiet --out ${IG_MODBUS_OUT}/inuse2 2>&1; rc=$?
     wait; test $rc -eq 1 && echo exit-1")
   set_tests_properties(cli.modbus.port_in_use PROPERTIES LABELS "cli;modbus" RESOURCE_LOCK loopback_ig

@@ -20,6 +20,18 @@ mbw() {
 }
 # A value read with -1: the line "[ADDR]: <tab>VALUE".
 read_u32() { mb -t 3:int -B -r "$1" -c 1 -1 2>&1 | sed -n "s/^\[$1\]:[[:space:]]*\([-0-9.]*\).*/\1/p"; }
+# Waits (polling the frame counter, bounded) until N more frames have been
+# rendered: a control written before is then applied. No fixed sleeps.
+wait_frames() {
+  local start want now
+  start=$(read_u32 2); want=$(( ${start:-0} + $1 ))
+  for _ in $(seq 1 400); do
+    now=$(read_u32 2)
+    [ -n "$now" ] && [ "$now" -ge "$want" ] && return 0
+    sleep 0.05
+  done
+  fail "the frame counter stopped at ${now:-?} (waited for $want)"
+}
 read_hold_f32() { mb -t 4:float -B -r "$1" -c 1 -1 2>&1 | sed -n "s/^\[$1\]:[[:space:]]*\([-0-9.e]*\).*/\1/p"; }
 
 # The default scenario with the two-level eye guard off: the guard keeps
@@ -41,17 +53,16 @@ send=$!
 # before the first frame (terrain build, first Level1 at full size can take a
 # second on a loaded machine): wait for frame 1 first.
 for _ in $(seq 1 100); do f1=$(read_u32 2); [ -n "$f1" ] && [ "$f1" -gt 0 ] && break; sleep 0.1; done
-sleep 0.5; f2=$(read_u32 2)
+wait_frames 5; f2=$(read_u32 2)
 echo "mbpoll frame counter: $f1 then $f2"
 [ -n "$f1" ] && [ -n "$f2" ] && [ "$f2" -gt "$f1" ] || fail "frame counter did not increase ($f1 -> $f2)"
-sleep 0.5
 echo "mbpoll status block:"; mb -t 3 -r 0 -c 37 -1 2>&1 | grep '^\[' | tr '\n' ' '; echo
 for _ in $(seq 1 50); do ok=$(read_u32 15); [ -n "$ok" ] && [ "$ok" -gt 0 ] && break; sleep 0.1; done
 echo "mbpoll native packets accepted: $ok"
 [ -n "$ok" ] && [ "$ok" -gt 0 ] || fail "native_ok not counting ($ok)"
 
 # 2. Thresholds a1=0.05, a2=0.10 in one FC 16 write: Level1 must shrink.
-sleep 1
+wait_frames 10
 fw=$(read_u32 2)
 mbw -t 4:float -B -r 2 -- 0.05 0.10 > "$out/write.log" 2>&1 || { cat "$out/write.log"; fail "threshold write"; }
 echo "mbpoll wrote a1=0.05 a2=0.10 at frame $fw: $(grep -o 'Written.*' "$out/write.log")"
@@ -88,7 +99,7 @@ cap=$(mb -t 4 -r 12 -c 1 -1 2>&1 | sed -n 's/^\[12\]:[[:space:]]*\([0-9]*\).*/\1
 # 4b. Level0 budget 8192: the method is rebuilt at the next frame boundary.
 fb=$(read_u32 2)
 mbw -t 4:int -B -r 8 -- 8192 > /dev/null 2>&1 || fail "level0_budget write"
-sleep 0.5
+wait_frames 3
 echo "mbpoll wrote level0_budget=8192 at frame $fb"
 
 # 4c. Latency mode 1 (latest): applied at a frame boundary, the frame log says so.
@@ -100,14 +111,14 @@ mbw -t 4 -r 13 -- 0 > /dev/null 2>&1 || fail "latency_mode write back"
 
 # 5. Freeze: the pose stays while ig send keeps streaming; wireframe: flag set.
 mbw -t 4 -r 0 -- 1 > /dev/null 2>&1 || fail "freeze write"
-sleep 0.2
+wait_frames 2
 state=$(mb -t 3 -r 0 -c 1 -1 2>&1 | sed -n 's/^\[0\]:[[:space:]]*\([0-9]*\).*/\1/p')
-fz1=$(read_u32 2); sleep 1; fz2=$(read_u32 2)
+fz1=$(read_u32 2); wait_frames 30; fz2=$(read_u32 2)
 mbw -t 4 -r 0 -- 0 > /dev/null 2>&1 || fail "unfreeze write"
 echo "freeze=1: ig_state $state, frames $fz1..$fz2 frozen"
 [ "$state" = "3" ] || fail "ig_state is '$state' while frozen, not 3"
 mbw -t 4 -r 1 -- 1 > /dev/null 2>&1 || fail "wireframe write"
-sleep 0.2
+wait_frames 2
 flags=$(mb -t 3 -r 1 -c 1 -1 2>&1 | sed -n 's/^\[1\]:[[:space:]]*\([0-9]*\).*/\1/p')
 mbw -t 4 -r 1 -- 0 > /dev/null 2>&1 || fail "wireframe off"
 echo "wireframe=1: status_flags $flags"
