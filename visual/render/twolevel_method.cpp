@@ -144,6 +144,34 @@ struct TwoLevelMethod::SizeMeshes {
   }
 };
 
+namespace {
+// Level0's triangles sorted by the Z-order (Morton) key of their centroid, so
+// the triangles inside, across and outside any square form few runs.
+lod::Level0Mesh z_ordered(lod::Level0Mesh mesh) {
+  auto spread = [](std::uint32_t v) {
+    std::uint64_t x = v & 0xFFFFu;
+    x = (x | (x << 8)) & 0x00FF00FFu;
+    x = (x | (x << 4)) & 0x0F0F0F0Fu;
+    x = (x | (x << 2)) & 0x33333333u;
+    x = (x | (x << 1)) & 0x55555555u;
+    return x;
+  };
+  const size_t tris = mesh.indices.size() / 3;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> key(tris);
+  for (size_t t = 0; t < tris; ++t) {
+    glm::ivec2 sum(0);
+    for (int k = 0; k < 3; ++k) sum += mesh.samples[mesh.indices[3 * t + k]];
+    key[t] = {spread(std::uint32_t(sum.x / 3)) | (spread(std::uint32_t(sum.y / 3)) << 1), std::uint32_t(t)};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::uint32_t> sorted;
+  sorted.reserve(mesh.indices.size());
+  for (const auto& [k, t] : key) sorted.insert(sorted.end(), {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
+  mesh.indices = std::move(sorted);
+  return mesh;
+}
+}  // namespace
+
 TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
     : scene_(scene),
       options_(options),
@@ -154,8 +182,8 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
       pyramid_(scene.height_pyramid()),
-      level0_(lod::build_level0_mesh(scene.heightfield(),
-                                     lod::Level0Options{options.level0_budget, 0.0, scene.earth_radius_m()})),
+      level0_(z_ordered(lod::build_level0_mesh(scene.heightfield(),
+                                               lod::Level0Options{options.level0_budget, 0.0, scene.earth_radius_m()}))),
       level0_heights_(level0_, scene.heightfield().width, scene.heightfield().height),
       block_mesh_(kBlockQuads),
       controller_(lod::level1_ladder(scene.heightfield().width, scene.heightfield().height, options.max_level1),
@@ -178,8 +206,7 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
   glCreateBuffers(1, &level0_vbo_);
   glNamedBufferStorage(level0_vbo_, GLsizeiptr(samples.size() * 4), samples.data(), 0);
   glCreateBuffers(1, &level0_ibo_);
-  glNamedBufferStorage(level0_ibo_, GLsizeiptr(level0_.indices.size() * 4), level0_.indices.data(),
-                       GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(level0_ibo_, GLsizeiptr(level0_.indices.size() * 4), level0_.indices.data(), 0);
   glCreateVertexArrays(1, &level0_vao_);
   glVertexArrayVertexBuffer(level0_vao_, 0, level0_vbo_, 0, 12);
   glVertexArrayElementBuffer(level0_vao_, level0_ibo_);
@@ -398,24 +425,29 @@ void TwoLevelMethod::update_walls(SizeMeshes& m, int n) {
 
 void TwoLevelMethod::classify_level0(int n) {
   // Triangles inside the square are never drawn; those outside need no
-  // discard, so the depth test can reject their hidden fragments early.
+  // discard, so the depth test can reject their hidden fragments early. The
+  // index buffer is static and in Z order, so each class is a few runs of
+  // consecutive triangles, drawn with one multi-draw each: nothing uploaded.
   const glm::ivec2 lo = origin_, hi = origin_ + (n - 1);
-  std::vector<std::uint32_t>& out = level0_frame_indices_;
-  std::vector<std::uint32_t>& crossing = level0_crossing_scratch_;
-  out.clear();
-  crossing.clear();
+  for (auto& runs : level0_runs_) runs.clear();
+  int last_class = -1;
   const auto& idx = level0_.indices;
   for (size_t t = 0; t + 2 < idx.size(); t += 3) {
-    glm::ivec2 a = level0_.samples[idx[t]], b = level0_.samples[idx[t + 1]], c = level0_.samples[idx[t + 2]];
+    const glm::ivec2 a = level0_.samples[idx[t]], b = level0_.samples[idx[t + 1]], c = level0_.samples[idx[t + 2]];
     const glm::ivec2 mn = glm::min(a, glm::min(b, c)), mx = glm::max(a, glm::max(b, c));
-    if (mn.x >= lo.x && mn.y >= lo.y && mx.x <= hi.x && mx.y <= hi.y) continue;  // inside
-    const bool outside = mx.x <= lo.x || mn.x >= hi.x || mx.y <= lo.y || mn.y >= hi.y;
-    auto& dst = outside ? out : crossing;
-    dst.insert(dst.end(), {idx[t], idx[t + 1], idx[t + 2]});
+    int cls = 1;                                                                  // crossing the square's edge
+    if (mn.x >= lo.x && mn.y >= lo.y && mx.x <= hi.x && mx.y <= hi.y) cls = -1;  // inside: not drawn
+    else if (mx.x <= lo.x || mn.x >= hi.x || mx.y <= lo.y || mn.y >= hi.y) cls = 0;  // outside
+    if (cls >= 0) {
+      auto& runs = level0_runs_[cls];
+      if (cls == last_class) runs.counts.back() += 3;
+      else {
+        runs.counts.push_back(3);
+        runs.offsets.push_back(reinterpret_cast<const void*>(t * sizeof(std::uint32_t)));
+      }
+    }
+    last_class = cls;
   }
-  level0_outside_indices_ = GLsizei(out.size());
-  level0_crossing_indices_ = GLsizei(crossing.size());
-  out.insert(out.end(), crossing.begin(), crossing.end());
 }
 
 MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarget& target) {
@@ -488,21 +520,15 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     // Pass 3: Level0 into the frame, outside the Level1 square, depth-tested.
     begin_pass("level0");
     target.bind();
-    if (!level0_frame_indices_.empty()) {
-      const GLsizeiptr bytes = GLsizeiptr(level0_frame_indices_.size() * 4);
-      glNamedBufferSubData(level0_ibo_, 0, bytes, level0_frame_indices_.data());
-      gl::count_upload(std::uint64_t(bytes));
-    }
     const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
     const glm::ivec2 eye_sample(int(std::floor(camera.position.x / spacing.x)),
                                 int(std::floor(camera.position.y / spacing.y)));
     glBindTextureUnit(3, band_target_->color_texture());
     glBindTextureUnit(4, band_target_->depth_texture());
     glBindVertexArray(level0_vao_);
-    GLsizeiptr first = 0;
     for (auto* program : {&level0_program_, &level0_clipped_program_}) {
-      const GLsizei count = program == &level0_program_ ? level0_outside_indices_ : level0_crossing_indices_;
-      if (count > 0 && !skipped("level0")) {
+      const Level0Runs& runs = level0_runs_[program == &level0_program_ ? 0 : 1];
+      if (!runs.counts.empty() && !skipped("level0")) {
         program->use();
         scene_.bind_common(*program, camera);
         program->set("u_eye_sample", eye_sample);
@@ -516,12 +542,13 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
         program->set("u_band_valid", band_visible_ && !skipped("band") ? 1 : 0);
         program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
         program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
-        glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * 4));
+        glMultiDrawElements(GL_TRIANGLES, runs.counts.data(), GL_UNSIGNED_INT, runs.offsets.data(),
+                            GLsizei(runs.counts.size()));
         gl::count_draw();
       }
-      first += count;
     }
-    level0_tris = (level0_outside_indices_ + level0_crossing_indices_) / 3;
+    for (const auto& runs : level0_runs_)
+      for (GLsizei c : runs.counts) level0_tris += c / 3;
     if (level0_tris > 0) passes.push_back("level0");
 
     // Coverage count for next frame's size decision (results read next frame).

@@ -9,6 +9,7 @@
 // pixels shaded with the blended coordinate), then a coverage count whose
 // result steers next frame's Level1 size.
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -97,8 +98,17 @@ class TwoLevelMethod final : public TerrainMethod {
   GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
   // Per frame: Level0 triangles wholly outside Level1's square, then those
   // crossing it (drawn with the discarding program); inside ones are skipped.
-  std::vector<std::uint32_t> level0_frame_indices_, level0_crossing_scratch_;
-  GLsizei level0_outside_indices_ = 0, level0_crossing_indices_ = 0;
+  // This frame's Level0 triangles as runs of the static index buffer:
+  // [0] wholly outside the Level1 square, [1] across its edge.
+  struct Level0Runs {
+    std::vector<GLsizei> counts;
+    std::vector<const void*> offsets;
+    void clear() {
+      counts.clear();
+      offsets.clear();
+    }
+  };
+  std::array<Level0Runs, 2> level0_runs_;
   void classify_level0(int n);
   GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
   std::map<std::pair<int, int>, std::unique_ptr<SizeMeshes>> size_meshes_;
