@@ -1,7 +1,7 @@
 #pragma once
 // Small double-precision quaternion helpers shared by the pose filter and its
 // tests: rotation vectors (axis * angle, radians) <-> unit quaternions, the
-// short-arc slerp, and the angle between two attitudes.
+// short-arc slerp (GLM's), and the angle between two attitudes.
 
 #include <algorithm>
 #include <cmath>
@@ -30,19 +30,10 @@ inline glm::dvec3 log_rotvec(glm::dquat q) {
 }
 
 // Spherical linear interpolation along the short arc (q and -q are the same
-// rotation), f in [0, 1]. Normalised lerp where the two nearly coincide.
-inline glm::dquat slerp_short(const glm::dquat& a, glm::dquat b, double f) {
-  double d = glm::dot(a, b);
-  if (d < 0.0) {
-    b = -b;
-    d = -d;
-  }
-  if (f <= 0.0) return a;
-  if (f >= 1.0) return b;
-  if (d > 0.9999995) return glm::normalize(a * (1.0 - f) + b * f);
-  const double theta = std::acos(std::min(d, 1.0));
-  const double s = std::sin(theta);
-  return glm::normalize(a * (std::sin((1.0 - f) * theta) / s) + b * (std::sin(f * theta) / s));
+// rotation), f clamped to [0, 1]: GLM's slerp, which takes the short path and
+// falls back to a linear blend where the two nearly coincide.
+inline glm::dquat slerp_short(const glm::dquat& a, const glm::dquat& b, double f) {
+  return glm::normalize(glm::slerp(a, b, std::clamp(f, 0.0, 1.0)));
 }
 
 // Angle in radians of the rotation taking a to b, in [0, pi].
