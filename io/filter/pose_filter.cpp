@@ -85,7 +85,6 @@ void PoseFilter::clear_stream() {
   offset_ = jitter_ = 0.0;
   seen_next_ = seen_count_ = 0;
   clock_init_ = false;
-  holding_first_ = false;
   above_ = false;
   have_output_ = false;
   last_tau_ = -std::numeric_limits<double>::infinity();
@@ -421,8 +420,6 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s, double display_lead
     ++counters_.holds;
     last_out_ = out;
     have_output_ = true;
-    holding_first_ = true;
-    first_t_ = at(0).t;
     return out;
   }
   // Playout point: now - (offset + delay), the sum slewed for a smooth timeline.
@@ -430,11 +427,11 @@ std::optional<FilteredPose> PoseFilter::sample(double now_s, double display_lead
   const double target = offset_ + delay;
   if (!clock_init_) {
     budget_ = target;
-    // Coming from the held first sample: start the timeline there and let
-    // the slew bring it to the target delay (10 % fast for a moment) rather
-    // than jump ahead by up to an interval.
-    if (holding_first_) budget_ = std::clamp(now_s - first_t_, target, target + opt_.clock_snap_s);
-    holding_first_ = false;
+    // Coming from the held first sample (the only output a stream gives
+    // before its timeline starts): start the timeline there and let the slew
+    // bring it to the target delay (10 % fast for a moment) rather than jump
+    // ahead by up to an interval.
+    if (have_output_) budget_ = std::clamp(now_s - at(0).t, target, target + opt_.clock_snap_s);
     clock_init_ = true;
   } else {
     const double dt = now_s - last_now_;

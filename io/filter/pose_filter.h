@@ -239,8 +239,6 @@ class PoseFilter {
   bool interval_known_ = false;
 
   bool clock_init_ = false;
-  bool holding_first_ = false;  // the first sample of a stream is shown until a second arrives
-  double first_t_ = 0.0;
   bool above_ = false;       // packets have run above offset + clock_step_s ...
   double above_since_ = 0.0;  // ... since this sender time
   double budget_ = 0.0;  // offset + delay in effect (slewed)

@@ -24,7 +24,7 @@ SenderClock::SenderClock(const SenderClockOptions& options) : opt_(options) {
 }
 
 void SenderClock::reset() {
-  head_ = count_ = 0;
+  clear_window();
   gap_count_ = gap_next_ = 0;
   started_ = false;
   period_ = opt_.nominal_interval_s;
@@ -88,7 +88,7 @@ void SenderClock::add(double arrival_s, std::int64_t index) {
 
 double SenderClock::relock(double arrival_s, std::optional<std::uint32_t> sequence) {
   const bool was_started = started_;
-  head_ = count_ = 0;
+  clear_window();
   late_run_ = 0;
   last_lateness_ = 0.0;
   // Continue strictly after the last stamp (a counter restart without a gap
@@ -126,7 +126,7 @@ double SenderClock::stamp(double arrival_s, std::optional<std::uint32_t> sequenc
     if (gap_count_ > 0 && std::fabs(rp - period_) > 0.25 * period_) {
       // The indices so far were counted with a wrong period (the nominal
       // one at start-up, or the sender changed rate): start the window again.
-      head_ = count_ = 0;
+      clear_window();
       period_ = rp;
     }
     step = std::max<std::int64_t>(1, std::llround((arrival_s - last_stamp_) / rp));
@@ -141,17 +141,20 @@ double SenderClock::stamp(double arrival_s, std::optional<std::uint32_t> sequenc
   if (!locked()) period_ = rounding_period();  // too few points for the fit yet
 
   const std::int64_t index = last_index_ + step;
-  // The envelope drops at once for an early arrival; once locked it rises at
-  // most 1 % of a period per index (when its lowest point leaves the
-  // window), so the stamps stay regular.
-  if (locked() && arrival_s < envelope(index, std::numeric_limits<double>::infinity()) - 0.25 * period_) {
+  // Where the window's envelope puts this index.
+  double slot = envelope(index, std::numeric_limits<double>::infinity());
+  if (locked() && arrival_s < slot - 0.25 * period_) {
     // Before its slot by more than a quarter period: a periodic sender's
     // packets cannot do that (delay only adds), so the sender's phase moved
     // (FlightGear after a stalled frame). Fit a new window from here.
-    head_ = count_ = 0;
+    clear_window();
+    slot = std::numeric_limits<double>::infinity();
     ++counters_.rephases;
   }
-  double env = envelope(index, arrival_s);
+  // The envelope drops at once for an early arrival; once locked it rises at
+  // most 1 % of a period per index (when its lowest point leaves the
+  // window), so the stamps stay regular.
+  double env = std::min(slot, arrival_s);
   if (locked()) env = std::min(env, last_stamp_ + 1.01 * period_ * double(step));
   const double floor = last_stamp_ + opt_.min_step_fraction * period_ * double(step);
   double s = env;

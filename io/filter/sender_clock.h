@@ -77,6 +77,7 @@ class SenderClock {
     std::int64_t index = 0;
   };
   const Point& at(int k) const { return win_[(head_ + k) % kWindow]; }
+  void clear_window() { head_ = count_ = 0; }
   double relock(double arrival_s, std::optional<std::uint32_t> sequence);
   void add(double arrival_s, std::int64_t index);
   void fit_period();

@@ -57,8 +57,8 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   return a;
 }
 
-void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, double pose_age_ms,
-                         bool last, const io::control::IgStatus& can_part) {
+void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
+                         const io::control::IgStatus& can_part) {
   namespace ctl = io::control;
   const double frame_us = (frame_end_s - frame_start_s) * 1e6;
   window_.push_back({frame_end_s, frame_us});
@@ -84,6 +84,7 @@ void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, P
     s.level1_ratio = float(t->last_ratio());
     flags |= ctl::kFlagTwoLevel;
   }
+  const double pose_age_ms = feed.pose_age_ms();
   s.pose_age_ms = pose_age_ms < 0 ? 0xFFFFFFFFu : std::uint32_t(std::min(std::lround(pose_age_ms), 0xFFFFFFFEL));
   auto counts = [&](io::Protocol p) {
     const auto& c = feed.intake().counters(p);

@@ -32,8 +32,8 @@ class ModbusLink {
   Applied apply_controls();
   bool frozen() const { return frozen_; }
 
-  void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, double pose_age_ms,
-               bool last, const io::control::IgStatus& can_part);
+  void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
+               const io::control::IgStatus& can_part);
   nlohmann::json summary() const;
 
  private:

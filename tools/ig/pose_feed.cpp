@@ -8,7 +8,7 @@ PoseFeed::PoseFeed(const terrain::Heightfield& hf, const io::PoseFilterOptions& 
     : filter_(options),
       intake_(filter_, geodetic_placer(hf)),
       georeferenced_(hf.georef.has_value()),
-      extent_m_((hf.width - 1) * hf.spacing_x_m, (hf.height - 1) * hf.spacing_y_m) {}
+      extent_m_(hf.extent_x_m(), hf.extent_y_m()) {}
 
 std::string PoseFeed::take_outside_warning() {
   if (outside_warning_.empty() || outside_warned_) return "";

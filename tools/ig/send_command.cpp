@@ -379,9 +379,8 @@ int run_send_command(const std::vector<std::string>& argv) {
       if (args.cigi_sync) {
         // Synchronous host: the next host frame only after the IG's Start Of
         // Frame for this one (2 s without it: counted, go on).
-        const std::uint64_t before = sof_count;
         const double give_up = io::net::steady_now_s() + 2.0;
-        while (sof_count == before || !last_sof || last_sof->last_host_frame != p.sequence) {
+        while (!last_sof || last_sof->last_host_frame != p.sequence) {
           const double left = give_up - io::net::steady_now_s();
           if (left <= 0) {
             ++sync_timeouts;

@@ -167,7 +167,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
     const std::string name = scenario.name + "_" + scenario.channels.front().name;
     const std::filesystem::path out = args.out_dir.empty() ? std::filesystem::path("out") / ("serve_" + name)
                                                            : std::filesystem::path(args.out_dir);
-    io::LatencyMode latency = *io::parse_latency_mode(args.latency.value_or(scenario.live_latency));
+    const io::LatencyMode latency = *io::parse_latency_mode(args.latency.value_or(scenario.live_latency));
     if (latency == io::LatencyMode::Synchronous && !args.cigi)
       throw std::runtime_error("latency mode sync is CIGI synchronous operation: it needs --cigi");
 
@@ -234,7 +234,8 @@ int run_serve_command(const std::vector<std::string>& argv) {
           max_datagrams);
     };
     for (int k = 0;; ++k) {
-      const bool sync = latency == io::LatencyMode::Synchronous && cigi_source;
+      // The mode in effect is the filter's (Modbus may change it at a frame boundary).
+      const bool sync = feed.filter().latency_mode() == io::LatencyMode::Synchronous && cigi_source;
       if (sync) {
         // CIGI synchronous operation: this frame is the host's next IG
         // Control. Read the CIGI socket one datagram at a time until one
@@ -301,11 +302,11 @@ int run_serve_command(const std::vector<std::string>& argv) {
         if (applied.latency) {
           if (*applied.latency == io::LatencyMode::Synchronous && !cigi_source) {
             std::cerr << "ig serve: modbus: latency_mode 2 (CIGI synchronous) needs --cigi; keeping "
-                      << io::latency_mode_name(latency) << "\n";
+                      << io::latency_mode_name(feed.filter().latency_mode()) << "\n";
           } else {
-            latency = *applied.latency;
-            feed.set_latency_mode(latency);
-            if (!args.quiet) std::cerr << "ig serve: modbus: latency mode " << io::latency_mode_name(latency) << "\n";
+            feed.set_latency_mode(*applied.latency);
+            if (!args.quiet)
+              std::cerr << "ig serve: modbus: latency mode " << io::latency_mode_name(*applied.latency) << "\n";
           }
         }
       }
@@ -340,11 +341,11 @@ int run_serve_command(const std::vector<std::string>& argv) {
           can_part.can_error_frames = std::uint32_t(cs.error_frames);
         }
 #endif
-        modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, feed.pose_age_ms(), last, can_part);
+        modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, last, can_part);
       }
 #endif
       if (last || (!runner.context().headless() && runner.window_closed())) break;
-      if (runner.context().headless() && latency != io::LatencyMode::Synchronous) {
+      if (runner.context().headless() && !sync) {
         // Own rate; a window paces on vsync; synchronous mode on the host.
         next_tick += period;
         const double now = io::net::steady_now_s();
@@ -361,7 +362,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
     }
     nlohmann::json extra = {{"pose_intake", feed.summary()},
                             {"rate_hz", args.rate_hz},
-                            {"latency_mode", io::latency_mode_name(latency)},
+                            {"latency_mode", io::latency_mode_name(feed.filter().latency_mode())},
                             {"datagrams", datagrams},
                             {"kernel_receive_timestamps", kernel_stamped}};
     if (cigi_source) extra["cigi_sync"] = {{"frames", sync_frames}, {"waits", sync_waits}};

@@ -18,13 +18,15 @@ CoveragePrediction predict_level1_coverage(const terrain::Heightfield& hf, const
   CoveragePrediction p;
   p.rays = int(rays.size());
   std::vector<int> inside(ladder.size(), 0);
+  std::vector<glm::ivec2> origins;
+  for (int n : ladder) origins.push_back(level1_square_origin(e, n, hf.width, hf.height));
   for (const auto& dir : rays) {
     const auto hit = terrain::cast_ray(hf, pyramid, eye, dir, max_t);
     if (!hit) continue;
     ++p.terrain_hits;
     const double si = hit->point.x / hf.spacing_x_m, sj = hit->point.y / hf.spacing_y_m;
     for (size_t k = 0; k < ladder.size(); ++k) {
-      const glm::ivec2 o = level1_square_origin(e, ladder[k], hf.width, hf.height);
+      const glm::ivec2 o = origins[k];
       const double side = ladder[k] - 1;
       if (si >= o.x && si <= o.x + side && sj >= o.y && sj <= o.y + side) ++inside[k];
     }

@@ -8,14 +8,16 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
+// The work counters' passes: the method's, then the sky.
+std::vector<std::string> pass_names_of(const TerrainMethod& method) {
+  auto names = method.pass_names();
+  names.push_back("sky");
+  return names;
+}
 }  // namespace
 
 FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
-    : scene_(scene), method_(&method), sky_(shader_dir, "sky.vert", "sky.frag"), recorder_([&] {
-        auto names = method.pass_names();
-        names.push_back("sky");
-        return names;
-      }()) {
+    : scene_(scene), method_(&method), sky_(shader_dir, "sky.vert", "sky.frag"), recorder_(pass_names_of(method)) {
   glCreateVertexArrays(1, &empty_vao_);
   method_->set_pass_recorder(&recorder_);
 }
@@ -28,9 +30,7 @@ FrameRenderer::~FrameRenderer() {
 void FrameRenderer::set_method(TerrainMethod& method) {
   method_->set_pass_recorder(nullptr);
   method_ = &method;
-  auto names = method.pass_names();
-  names.push_back("sky");
-  if (names != recorder_.pass_names()) recorder_.reset_passes(std::move(names));
+  if (auto names = pass_names_of(method); names != recorder_.pass_names()) recorder_.reset_passes(std::move(names));
   method_->set_pass_recorder(&recorder_);
 }
 
@@ -58,7 +58,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   glClearDepth(0.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-  recorder_.begin(method_->pass_names().front());  // a multi-pass method opens its own as it goes
+  recorder_.begin(recorder_.pass_names().front());  // a multi-pass method opens its own as it goes
   r.method = method_->draw(camera, target);
   recorder_.end();
   if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);

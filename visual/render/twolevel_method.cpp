@@ -332,8 +332,7 @@ void TwoLevelMethod::update(const Camera& camera) {
   eye_guarded_ = false;
   if (options_.eye_guard) apply_eye_guard(camera, n, ec_i, ec_j);
   n_ = n;
-  origin_ = {std::clamp(ec_i - (n - 1) / 2, 0, std::max(hf.width - n, 0)),
-             std::clamp(ec_j - (n - 1) / 2, 0, std::max(hf.height - n, 0))};
+  origin_ = lod::level1_square_origin({ec_i, ec_j}, n, hf.width, hf.height);
 
   // Band width: w_trans = (r0 / r1) * alpha * w1 (r1 = 1: Level1 is full
   // resolution), rounded to the band stride, at least one stride, at most w1 / 4.
@@ -369,7 +368,7 @@ void TwoLevelMethod::update(const Camera& camera) {
       glm::dvec3(std::min(g1.x, hf.width - 1) * hf.spacing_x_m, std::min(g1.y, hf.height - 1) * hf.spacing_y_m,
                  mm.hi) - camera.position);
   // The rest of the frame's CPU work, so it counts as LOD time: the seam
-  // walls' heights and which Level0 triangles to draw (draw() uploads them).
+  // walls' heights (draw() uploads them) and which Level0 runs to draw.
   if (!visible_blocks_.empty()) update_walls(meshes_for(n, band_w_), n);
   classify_level0(n);
 }
