@@ -144,33 +144,6 @@ struct TwoLevelMethod::SizeMeshes {
   }
 };
 
-namespace {
-// Level0's triangles sorted by the Z-order (Morton) key of their centroid, so
-// the triangles inside, across and outside any square form few runs.
-lod::Level0Mesh z_ordered(lod::Level0Mesh mesh) {
-  auto spread = [](std::uint32_t v) {
-    std::uint64_t x = v & 0xFFFFu;
-    x = (x | (x << 8)) & 0x00FF00FFu;
-    x = (x | (x << 4)) & 0x0F0F0F0Fu;
-    x = (x | (x << 2)) & 0x33333333u;
-    x = (x | (x << 1)) & 0x55555555u;
-    return x;
-  };
-  const size_t tris = mesh.indices.size() / 3;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> key(tris);
-  for (size_t t = 0; t < tris; ++t) {
-    glm::ivec2 sum(0);
-    for (int k = 0; k < 3; ++k) sum += mesh.samples[mesh.indices[3 * t + k]];
-    key[t] = {spread(std::uint32_t(sum.x / 3)) | (spread(std::uint32_t(sum.y / 3)) << 1), std::uint32_t(t)};
-  }
-  std::sort(key.begin(), key.end());
-  std::vector<std::uint32_t> sorted;
-  sorted.reserve(mesh.indices.size());
-  for (const auto& [k, t] : key) sorted.insert(sorted.end(), {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
-  mesh.indices = std::move(sorted);
-  return mesh;
-}
-}  // namespace
 
 TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
     : scene_(scene),
@@ -182,7 +155,7 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
       pyramid_(scene.height_pyramid()),
-      level0_(z_ordered(lod::build_level0_mesh(scene.heightfield(),
+      level0_(lod::z_ordered(lod::build_level0_mesh(scene.heightfield(),
                                                lod::Level0Options{options.level0_budget, 0.0, scene.earth_radius_m()}))),
       level0_heights_(level0_, scene.heightfield().width, scene.heightfield().height),
       block_mesh_(kBlockQuads),
@@ -198,6 +171,7 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
   }
   // Per vertex: sample index (2 x i32) and lift (f32).
   std::vector<std::int32_t> samples;
+  level0_clusters_ = std::make_unique<lod::Level0Clusters>(level0_, glm::dvec2(hf.spacing_x_m, hf.spacing_y_m));
   for (size_t v = 0; v < level0_.samples.size(); ++v) {
     std::int32_t bits = 0;
     std::memcpy(&bits, &lift[v], 4);
@@ -370,7 +344,14 @@ void TwoLevelMethod::update(const Camera& camera) {
   // The rest of the frame's CPU work, so it counts as LOD time: the seam
   // walls' heights (draw() uploads them) and which Level0 runs to draw.
   if (!visible_blocks_.empty()) update_walls(meshes_for(n, band_w_), n);
-  classify_level0(n);
+  // Level0: clusters of the static buffer outside the view are skipped whole;
+  // inside the square nothing is drawn; outside it no discard, so the depth
+  // test can reject hidden fragments early.
+  level0_clusters_->select(origin_, origin_ + (n - 1),
+                           [&](const glm::dvec3& lo, const glm::dvec3& hi) {
+                             return frustum.intersects_box(lo - camera.position, hi - camera.position);
+                           },
+                           level0_runs_[0], level0_runs_[1]);
 }
 
 void TwoLevelMethod::ensure_band_target(int width, int height) {
@@ -419,33 +400,6 @@ void TwoLevelMethod::update_walls(SizeMeshes& m, int n) {
     const float h0 = std::isfinite(q) ? float(q) : h1;
     m.wall_z[2 * k] = {1.0f, std::max(h0, h1)};
     m.wall_z[2 * k + 1] = {1.0f, std::min(h0, h1) - kBelow};
-  }
-}
-
-void TwoLevelMethod::classify_level0(int n) {
-  // Triangles inside the square are never drawn; those outside need no
-  // discard, so the depth test can reject their hidden fragments early. The
-  // index buffer is static and in Z order, so each class is a few runs of
-  // consecutive triangles, drawn with one multi-draw each: nothing uploaded.
-  const glm::ivec2 lo = origin_, hi = origin_ + (n - 1);
-  for (auto& runs : level0_runs_) runs.clear();
-  int last_class = -1;
-  const auto& idx = level0_.indices;
-  for (size_t t = 0; t + 2 < idx.size(); t += 3) {
-    const glm::ivec2 a = level0_.samples[idx[t]], b = level0_.samples[idx[t + 1]], c = level0_.samples[idx[t + 2]];
-    const glm::ivec2 mn = glm::min(a, glm::min(b, c)), mx = glm::max(a, glm::max(b, c));
-    int cls = 1;                                                                  // crossing the square's edge
-    if (mn.x >= lo.x && mn.y >= lo.y && mx.x <= hi.x && mx.y <= hi.y) cls = -1;  // inside: not drawn
-    else if (mx.x <= lo.x || mn.x >= hi.x || mx.y <= lo.y || mn.y >= hi.y) cls = 0;  // outside
-    if (cls >= 0) {
-      auto& runs = level0_runs_[cls];
-      if (cls == last_class) runs.counts.back() += 3;
-      else {
-        runs.counts.push_back(3);
-        runs.offsets.push_back(reinterpret_cast<const void*>(t * sizeof(std::uint32_t)));
-      }
-    }
-    last_class = cls;
   }
 }
 
@@ -526,8 +480,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     glBindTextureUnit(4, band_target_->depth_texture());
     glBindVertexArray(level0_vao_);
     for (auto* program : {&level0_program_, &level0_clipped_program_}) {
-      const Level0Runs& runs = level0_runs_[program == &level0_program_ ? 0 : 1];
-      if (!runs.counts.empty() && !skipped("level0")) {
+      const lod::IndexRuns& runs = level0_runs_[program == &level0_program_ ? 0 : 1];
+      if (!runs.count.empty() && !skipped("level0")) {
         program->use();
         scene_.bind_common(*program, camera);
         program->set("u_eye_sample", eye_sample);
@@ -541,13 +495,16 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
         program->set("u_band_valid", band_visible_ && !skipped("band") ? 1 : 0);
         program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
         program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
-        glMultiDrawElements(GL_TRIANGLES, runs.counts.data(), GL_UNSIGNED_INT, runs.offsets.data(),
-                            GLsizei(runs.counts.size()));
+        draw_counts_.assign(runs.count.begin(), runs.count.end());
+        draw_offsets_.clear();
+        for (auto first : runs.first)
+          draw_offsets_.push_back(reinterpret_cast<const void*>(std::uintptr_t(first) * sizeof(std::uint32_t)));
+        glMultiDrawElements(GL_TRIANGLES, draw_counts_.data(), GL_UNSIGNED_INT, draw_offsets_.data(),
+                            GLsizei(draw_counts_.size()));
         gl::count_draw();
       }
     }
-    for (const auto& runs : level0_runs_)
-      for (GLsizei c : runs.counts) level0_tris += c / 3;
+    for (const auto& runs : level0_runs_) level0_tris += (long long)runs.indices() / 3;
     if (level0_tris > 0) passes.push_back("level0");
 
     // Coverage count for next frame's size decision (results read next frame).

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "gl/shader_program.h"
+#include "lod/level0_clusters.h"
 #include "lod/level0_height_query.h"
 #include "lod/level1_size_controller.h"
 #include "lod/look_at_point.h"
@@ -96,20 +97,12 @@ class TwoLevelMethod final : public TerrainMethod {
   lod::Level0Mesh level0_;
   lod::Level0HeightQuery level0_heights_;
   GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
-  // Per frame: Level0 triangles wholly outside Level1's square, then those
-  // crossing it (drawn with the discarding program); inside ones are skipped.
-  // This frame's Level0 triangles as runs of the static index buffer:
+  // Level0's static buffer as culled clusters; this frame's runs of it:
   // [0] wholly outside the Level1 square, [1] across its edge.
-  struct Level0Runs {
-    std::vector<GLsizei> counts;
-    std::vector<const void*> offsets;
-    void clear() {
-      counts.clear();
-      offsets.clear();
-    }
-  };
-  std::array<Level0Runs, 2> level0_runs_;
-  void classify_level0(int n);
+  std::unique_ptr<lod::Level0Clusters> level0_clusters_;
+  std::array<lod::IndexRuns, 2> level0_runs_;
+  std::vector<GLsizei> draw_counts_;
+  std::vector<const void*> draw_offsets_;
   GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
   std::map<std::pair<int, int>, std::unique_ptr<SizeMeshes>> size_meshes_;
   lod::Level1SizeController controller_;

@@ -1,0 +1,102 @@
+#include "lod/level0_clusters.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <glm/common.hpp>
+
+namespace ig::lod {
+
+// Level0's triangles sorted by the Z-order (Morton) key of their centroid, so
+// the triangles inside, across and outside any square form few runs.
+Level0Mesh z_ordered(Level0Mesh mesh) {
+  auto spread = [](std::uint32_t v) {
+    std::uint64_t x = v & 0xFFFFu;
+    x = (x | (x << 8)) & 0x00FF00FFu;
+    x = (x | (x << 4)) & 0x0F0F0F0Fu;
+    x = (x | (x << 2)) & 0x33333333u;
+    x = (x | (x << 1)) & 0x55555555u;
+    return x;
+  };
+  const size_t tris = mesh.indices.size() / 3;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> key(tris);
+  for (size_t t = 0; t < tris; ++t) {
+    glm::ivec2 sum(0);
+    for (int k = 0; k < 3; ++k) sum += mesh.samples[mesh.indices[3 * t + k]];
+    key[t] = {spread(std::uint32_t(sum.x / 3)) | (spread(std::uint32_t(sum.y / 3)) << 1), std::uint32_t(t)};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::uint32_t> sorted;
+  sorted.reserve(mesh.indices.size());
+  for (const auto& [k, t] : key) sorted.insert(sorted.end(), {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
+  mesh.indices = std::move(sorted);
+  return mesh;
+}
+
+void IndexRuns::append(std::uint32_t first_index, std::uint32_t index_count) {
+  if (!first.empty() && first.back() + count.back() == first_index) {
+    count.back() += index_count;
+    return;
+  }
+  first.push_back(first_index);
+  count.push_back(index_count);
+}
+
+std::uint64_t IndexRuns::indices() const {
+  std::uint64_t n = 0;
+  for (auto c : count) n += c;
+  return n;
+}
+
+Level0Clusters::Level0Clusters(const Level0Mesh& mesh, glm::dvec2 spacing_m, int triangles_per_cluster)
+    : mesh_(mesh), spacing_(spacing_m) {
+  const auto triangles = std::uint32_t(mesh.indices.size() / 3);
+  const auto per = std::uint32_t(std::max(triangles_per_cluster, 1));
+  for (std::uint32_t t0 = 0; t0 < triangles; t0 += per) {
+    Cluster c{t0, std::min(per, triangles - t0), glm::ivec2(1 << 30), glm::ivec2(-(1 << 30)), 1e30f, -1e30f};
+    for (std::uint32_t k = 3 * t0; k < 3 * (t0 + c.triangles); ++k) {
+      const auto v = mesh.indices[k];
+      c.lo = glm::min(c.lo, mesh.samples[v]);
+      c.hi = glm::max(c.hi, mesh.samples[v]);
+      c.z_lo = std::min(c.z_lo, mesh.positions[v].z);
+      c.z_hi = std::max(c.z_hi, mesh.positions[v].z);
+    }
+    clusters_.push_back(c);
+  }
+}
+
+int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const BoxVisible& visible, IndexRuns& outside,
+                           IndexRuns& crossing) const {
+  outside.clear();
+  crossing.clear();
+  auto inside_square = [&](glm::ivec2 lo, glm::ivec2 hi) {
+    return lo.x >= square_lo.x && lo.y >= square_lo.y && hi.x <= square_hi.x && hi.y <= square_hi.y;
+  };
+  auto clear_of_square = [&](glm::ivec2 lo, glm::ivec2 hi) {
+    return hi.x <= square_lo.x || lo.x >= square_hi.x || hi.y <= square_lo.y || lo.y >= square_hi.y;
+  };
+  int culled = 0;
+  for (const Cluster& c : clusters_) {
+    if (inside_square(c.lo, c.hi)) continue;
+    const glm::dvec3 lo(c.lo.x * spacing_.x, c.lo.y * spacing_.y, c.z_lo);
+    const glm::dvec3 hi(c.hi.x * spacing_.x, c.hi.y * spacing_.y, c.z_hi);
+    if (!visible(lo, hi)) {
+      ++culled;
+      continue;
+    }
+    if (clear_of_square(c.lo, c.hi)) {
+      outside.append(3 * c.first_triangle, 3 * c.triangles);
+      continue;
+    }
+    for (std::uint32_t t = c.first_triangle; t < c.first_triangle + c.triangles; ++t) {
+      const auto* idx = &mesh_.indices[3 * t];
+      const glm::ivec2 a = mesh_.samples[idx[0]], b = mesh_.samples[idx[1]], d = mesh_.samples[idx[2]];
+      const glm::ivec2 mn = glm::min(a, glm::min(b, d)), mx = glm::max(a, glm::max(b, d));
+      if (inside_square(mn, mx)) continue;
+      (clear_of_square(mn, mx) ? outside : crossing).append(3 * t, 3);
+    }
+  }
+  return culled;
+}
+
+}  // namespace ig::lod

@@ -1,0 +1,63 @@
+#pragma once
+// Level0's static index buffer, in Z order, cut into clusters of consecutive
+// triangles, each with a box. Per frame the clusters are culled against the
+// view and classified against Level1's square, so the draw is a few runs of
+// the static buffer: the paper draws all of Level0 every frame, but seen at
+// FOV 15 most of a whole-DEM mesh is outside the view, and its vertices cost
+// shading time on any GPU. No GL here: the runs are offsets into the buffer.
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "lod/roam_level0_mesh.h"
+
+namespace ig::lod {
+
+// The mesh with its triangles sorted by the Z-order (Morton) key of their
+// centroid, so the triangles of any square form few runs and clusters are compact.
+Level0Mesh z_ordered(Level0Mesh mesh);
+
+// Runs of the index buffer: first index and index count of each.
+struct IndexRuns {
+  std::vector<std::uint32_t> first, count;
+  void clear() {
+    first.clear();
+    count.clear();
+  }
+  void append(std::uint32_t first_index, std::uint32_t index_count);  // merges with the last run when contiguous
+  std::uint64_t indices() const;
+};
+
+class Level0Clusters {
+ public:
+  // `mesh` must outlive this object (its triangles are read per frame).
+  Level0Clusters(const Level0Mesh& mesh, glm::dvec2 spacing_m, int triangles_per_cluster = 128);
+
+  // Boxes in terrain-local metres (x, y) and height (z), as the heights are drawn.
+  using BoxVisible = std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>;
+
+  // Level0's triangles for one frame, given Level1's square [lo, hi] in
+  // samples: `outside` wholly outside it, `crossing` across its edge (the
+  // discarding program), triangles inside it never. Clusters whose box is not
+  // visible are skipped whole. Returns the number of clusters culled.
+  int select(glm::ivec2 square_lo, glm::ivec2 square_hi, const BoxVisible& visible, IndexRuns& outside,
+             IndexRuns& crossing) const;
+
+  int cluster_count() const { return int(clusters_.size()); }
+
+ private:
+  struct Cluster {
+    std::uint32_t first_triangle, triangles;
+    glm::ivec2 lo, hi;  // samples
+    float z_lo, z_hi;
+  };
+  const Level0Mesh& mesh_;
+  glm::dvec2 spacing_;
+  std::vector<Cluster> clusters_;
+};
+
+}  // namespace ig::lod
