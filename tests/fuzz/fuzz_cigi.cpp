@@ -1,10 +1,14 @@
-// libFuzzer target: CIGI 3.3 host datagram and Start Of Frame decoders.
+// libFuzzer target: CIGI 3.3 host datagram, host service request and Start
+// Of Frame / response decoders.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <variant>
 
 #include "fuzz_check.h"
 #include "io/wire/cigi.h"
+#include "io/wire/cigi_queries.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace ig::io::wire;
@@ -23,5 +27,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const StartOfFrameResult s = decode_cigi_start_of_frame(in);
   if (s.sof.has_value() == s.reject.has_value()) __builtin_trap();
   if (s.sof && s.sof->ig_mode > 3u) __builtin_trap();
+  // Requests: only well-formed ones come out, each re-encodes to itself.
+  const CigiRequests q = decode_cigi_requests(in);
+  if (!q.host_frame && (!q.requests.empty() || !q.rejects.empty())) __builtin_trap();
+  for (const CigiRequest& req : q.requests) {
+    if (const auto* h = std::get_if<HatHotRequest>(&req)) {
+      if (int(h->type) > 2 || !std::isfinite(h->point.x + h->point.y + h->point.z)) __builtin_trap();
+    } else if (const auto* v = std::get_if<LosVectorRequest>(&req)) {
+      if (!(v->min_range_m >= 0 && v->max_range_m >= v->min_range_m) || !std::isfinite(v->max_range_m)) __builtin_trap();
+    }
+  }
+  (void)decode_cigi_responses(in);
   return 0;
 }
