@@ -6,6 +6,7 @@
 uniform bool u_band_valid;       // the band pass ran this frame
 uniform sampler2D u_band;        // RGBA16F: rg = uv1 - centre, b = beta, a = mask
 uniform sampler2D u_band_depth;  // the band pass's depth
+uniform vec4 u_band_rect;        // pixels (x0, y0, x1, y1): the band target is valid only inside
 uniform vec2 u_level1_center;    // band coordinates are relative to this (samples)
 uniform vec2 u_near_far;
 uniform float u_band_tolerance_m;
@@ -16,6 +17,7 @@ float view_distance(float depth) {  // reversed-Z depth -> distance along the vi
 
 vec2 level0_uv(vec2 own) {
   if (!u_band_valid) return own;
+  if (any(lessThan(gl_FragCoord.xy, u_band_rect.xy)) || any(greaterThanEqual(gl_FragCoord.xy, u_band_rect.zw))) return own;
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 band = texelFetch(u_band, px, 0);
   if (band.a < 0.5) return own;

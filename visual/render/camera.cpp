@@ -62,16 +62,39 @@ Frustum frustum_of(const Camera& camera) {
   return f;
 }
 
+namespace {
+// An eye-relative flat-terrain box as drawn with curvature: heights are
+// z - drop(d), so the nearest horizontal point drops least, the farthest corner most.
+void lower_by_curvature(glm::dvec3& lo, glm::dvec3& hi, double earth_radius_m) {
+  if (earth_radius_m <= 0.0) return;
+  const double nx = std::max(lo.x, std::min(0.0, hi.x)), ny = std::max(lo.y, std::min(0.0, hi.y));
+  const double fx = std::max(std::abs(lo.x), std::abs(hi.x)), fy = std::max(std::abs(lo.y), std::abs(hi.y));
+  hi.z -= terrain::curvature_drop(std::hypot(nx, ny), earth_radius_m);
+  lo.z -= terrain::curvature_drop(std::hypot(fx, fy), earth_radius_m);
+}
+}  // namespace
+
+glm::ivec4 screen_rect_of_box(const Camera& camera, glm::dvec3 lo, glm::dvec3 hi, int width, int height) {
+  lower_by_curvature(lo, hi, camera.earth_radius_m);
+  const glm::dmat4 vp = glm::dmat4(camera.view_projection());
+  double x0 = 1e30, y0 = 1e30, x1 = -1e30, y1 = -1e30;
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec4 c = vp * glm::dvec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0);
+    if (c.w <= camera.near_m) return {0, 0, width, height};  // near or behind the eye: no bound
+    x0 = std::min(x0, c.x / c.w);
+    x1 = std::max(x1, c.x / c.w);
+    y0 = std::min(y0, c.y / c.w);
+    y1 = std::max(y1, c.y / c.w);
+  }
+  auto px = [](double ndc, int size) { return std::clamp(int(std::floor((ndc * 0.5 + 0.5) * size)), 0, size); };
+  // One pixel of margin for rasterisation rounding.
+  return {std::max(px(x0, width) - 1, 0), std::max(px(y0, height) - 1, 0), std::min(px(x1, width) + 1, width),
+          std::min(px(y1, height) + 1, height)};
+}
+
 bool Frustum::intersects_box(const glm::dvec3& box_lo, const glm::dvec3& box_hi) const {
   glm::dvec3 lo = box_lo, hi = box_hi;
-  if (earth_radius_m > 0.0) {
-    // Drawn heights are z - drop(d): the box's nearest horizontal point drops
-    // least, its farthest corner most.
-    const double nx = std::max(lo.x, std::min(0.0, hi.x)), ny = std::max(lo.y, std::min(0.0, hi.y));
-    const double fx = std::max(std::abs(lo.x), std::abs(hi.x)), fy = std::max(std::abs(lo.y), std::abs(hi.y));
-    hi.z -= terrain::curvature_drop(std::hypot(nx, ny), earth_radius_m);
-    lo.z -= terrain::curvature_drop(std::hypot(fx, fy), earth_radius_m);
-  }
+  lower_by_curvature(lo, hi, earth_radius_m);
   for (const auto& p : planes) {
     const glm::dvec3 v(p.x >= 0 ? hi.x : lo.x, p.y >= 0 ? hi.y : lo.y, p.z >= 0 ? hi.z : lo.z);
     if (p.x * v.x + p.y * v.y + p.z * v.z + p.w < 0) return false;

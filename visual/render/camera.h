@@ -60,4 +60,10 @@ struct Frustum {
 };
 Frustum frustum_of(const Camera& camera);
 
+// The pixel rectangle (x0, y0, x1, y1 exclusive; GL window coordinates, y up)
+// holding an eye-relative flat-terrain box as drawn (curvature as in
+// Frustum::intersects_box); the whole viewport when a corner is near or
+// behind the eye.
+glm::ivec4 screen_rect_of_box(const Camera& camera, glm::dvec3 lo, glm::dvec3 hi, int width, int height);
+
 }  // namespace ig::render

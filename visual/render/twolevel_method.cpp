@@ -337,10 +337,13 @@ void TwoLevelMethod::update(const Camera& camera) {
   });
   const glm::ivec2 g0 = origin_ - band_w_, g1 = origin_ + (n - 1) + band_w_;
   const auto mm = rect_minmax(pyramid_, g0.x, g0.y, g1.x, g1.y);
-  band_visible_ = frustum.intersects_box(
-      glm::dvec3(std::max(g0.x, 0) * hf.spacing_x_m, std::max(g0.y, 0) * hf.spacing_y_m, mm.lo) - camera.position,
-      glm::dvec3(std::min(g1.x, hf.width - 1) * hf.spacing_x_m, std::min(g1.y, hf.height - 1) * hf.spacing_y_m,
-                 mm.hi) - camera.position);
+  const glm::dvec3 band_lo =
+      glm::dvec3(std::max(g0.x, 0) * hf.spacing_x_m, std::max(g0.y, 0) * hf.spacing_y_m, mm.lo) - camera.position;
+  const glm::dvec3 band_hi = glm::dvec3(std::min(g1.x, hf.width - 1) * hf.spacing_x_m,
+                                        std::min(g1.y, hf.height - 1) * hf.spacing_y_m, mm.hi) - camera.position;
+  band_visible_ = frustum.intersects_box(band_lo, band_hi);
+  // The band target is cleared, drawn and read only inside the band's screen rectangle.
+  band_rect_ = screen_rect_of_box(camera, band_lo, band_hi, viewport_.x, viewport_.y);
   // The rest of the frame's CPU work, so it counts as LOD time: the seam
   // walls' heights (draw() uploads them) and which Level0 runs to draw.
   if (!visible_blocks_.empty()) update_walls(meshes_for(n, band_w_), n);
@@ -451,6 +454,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       glBindFramebuffer(GL_FRAMEBUFFER, band_fbo);
       const float clear_band[4] = {0, 0, 0, 0};
       const float clear_depth = 0.0f;
+      glEnable(GL_SCISSOR_TEST);  // clears and the ring only inside the band's rectangle
+      glScissor(band_rect_.x, band_rect_.y, band_rect_.z - band_rect_.x, band_rect_.w - band_rect_.y);
       glClearNamedFramebufferfv(band_fbo, GL_COLOR, 0, clear_band);
       glClearNamedFramebufferfv(band_fbo, GL_DEPTH, 0, &clear_depth);
       SizeMeshes& m = meshes_for(n, band_w_);
@@ -466,6 +471,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       glBindVertexArray(m.ring_vao);
       glDrawElements(GL_TRIANGLES, m.ring_indices, GL_UNSIGNED_INT, nullptr);
       gl::count_draw();
+      glDisable(GL_SCISSOR_TEST);
       band_tris = m.ring_indices / 3;
       passes.push_back("band");
     }
@@ -492,6 +498,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
         program->set("u_level1_center", centre);
         program->set("u_band", 3);
         program->set("u_band_depth", 4);
+        program->set("u_band_rect", glm::vec4(band_rect_));
         program->set("u_band_valid", band_visible_ && !skipped("band") ? 1 : 0);
         program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
         program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));

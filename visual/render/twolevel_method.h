@@ -120,6 +120,7 @@ class TwoLevelMethod final : public TerrainMethod {
   static constexpr int kEyeGuardMarginSamples = 32;
   void apply_eye_guard(const Camera& camera, int& n, int& ec_i, int& ec_j);
   bool terrain_visible_ = false, band_visible_ = false;
+  glm::ivec4 band_rect_{0};  // the band's screen rectangle (x0, y0, x1, y1), from update()
   std::vector<glm::ivec2> visible_blocks_;
 
   // Band target (RGBA16F + depth), beta template, coverage queries.
