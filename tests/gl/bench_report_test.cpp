@@ -71,3 +71,19 @@ TEST(BenchReport, NoRatioWhenTwolevelMissesTheTarget) {
 }
 
 }  // namespace
+
+namespace {
+TEST(BenchReport, MatchedErrorOnCpuTimeUsesTheCpuColumn) {
+  // Same errors, CPU times unlike the wall times: the match follows the column asked for.
+  std::vector<BenchRow> rows = {row("twolevel", 1, 2.0, 20.0), row("other", 1, 3.0, 10.0), row("other", 2, 1.0, 50.0)};
+  rows[0].cpu_ms_median = 30.0;
+  rows[1].cpu_ms_median = 20.0;
+  rows[2].cpu_ms_median = 80.0;
+  const auto wall = ig::app::match_horizon_error(rows, 2.0);
+  const auto cpu = ig::app::match_horizon_error(rows, 2.0, &BenchRow::cpu_ms_median);
+  EXPECT_DOUBLE_EQ(find(wall, "other").frame_ms, 30.0);
+  EXPECT_DOUBLE_EQ(*find(wall, "other").ratio, 1.5);
+  EXPECT_DOUBLE_EQ(find(cpu, "other").frame_ms, 50.0);
+  EXPECT_DOUBLE_EQ(*find(cpu, "other").ratio, 50.0 / 30.0);
+}
+}  // namespace

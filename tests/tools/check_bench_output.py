@@ -19,7 +19,7 @@ COLUMNS = [
     "horizon_mean_px", "horizon_max_px", "depth_rel_p95", "depth_rel_max", "psnr_db",
     "holes_mean", "hole_fraction", "interior_holes_mean", "enclosed_holes_mean", "bound_px_median",
     "bound_px_max", "vs_invocations_median", "fs_invocations_median", "primitives_median", "draw_calls_median",
-    "upload_bytes_median",
+    "upload_bytes_median", "cpu_ms_median",
 ]
 TEXT = {"method", "knob_name", "knob_unit"}
 MAY_BE_EMPTY = {"knob_value", "bound_px_median", "bound_px_max"}
@@ -81,6 +81,8 @@ def main():
             fail(f"{where}: p95 below the median")
         if number(row, "horizon_max_px", where) < number(row, "horizon_mean_px", where):
             fail(f"{where}: horizon max below its mean")
+        if not number(row, "cpu_ms_median", where) > 0:
+            fail(f"{where}: cpu_ms_median must be > 0")
         if not number(row, "triangles_median", where) > 0:
             fail(f"{where}: no triangles drawn")
         if not 0 <= number(row, "hole_fraction", where) <= 1:

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -49,6 +50,13 @@ constexpr const char* kUsage =
     "Exit status: 0 ok, 1 the run failed (or the plot could not be drawn), 2 bad arguments.\n";
 
 using Clock = std::chrono::steady_clock;
+// CPU time of the whole process (every thread: llvmpipe rasterises on its own).
+double process_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
@@ -323,16 +331,19 @@ int run_bench_command(const std::vector<std::string>& argv) {
       const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
 
       renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
-      std::vector<double> frame_ms, lod_ms, triangles, bounds, depth_p95, vs, fs, prims, draws, uploads;
+      std::vector<double> frame_ms, cpu_ms, lod_ms, triangles, bounds, depth_p95, vs, fs, prims, draws, uploads;
       double horizon_sum = 0.0, sq_sum = 0.0, samples_px = 0.0, holes = 0.0, interior_holes = 0.0, enclosed_holes = 0.0,
              ref_px = 0.0;
       size_t next_sample = 0;
       for (int i = 0; i < int(frames.size()); ++i) {
         const render::Camera camera = camera_at(frames[i]);
         const auto tf = Clock::now();
+        const double cpu0 = process_cpu_ms();
         const render::ViewResult vr = renderer.render(camera, target);
+        const double cpu = process_cpu_ms() - cpu0;
         const double ms = ms_since(tf);
         frame_ms.push_back(ms);
+        cpu_ms.push_back(cpu);
         lod_ms.push_back(vr.timings.lod_ms);
         triangles.push_back(double(vr.method.triangles));
         vs.push_back(double(vr.total.vs_invocations));
@@ -344,6 +355,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
                                               knob_cell,
                                               {"frame", frames[i]},
                                               {"frame_ms", ms},
+                                              {"cpu_ms", cpu},
                                               {"lod_ms", vr.timings.lod_ms},
                                               {"terrain_ms", vr.timings.terrain_ms},
                                               {"sky_ms", vr.timings.sky_ms},
@@ -391,6 +403,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
       row.frame_ms_median = stats::percentiles(frame_ms).median;
       row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
       row.lod_ms_median = stats::percentiles(lod_ms).median;
+      row.cpu_ms_median = stats::percentiles(cpu_ms).median;
       row.triangles_median = stats::percentiles(triangles).median;
       row.vs_invocations_median = stats::percentiles(vs).median;
       row.fs_invocations_median = stats::percentiles(fs).median;

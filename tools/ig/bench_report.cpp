@@ -37,7 +37,8 @@ std::string knob_text(const BenchRow& r) {
 }
 
 // Time at `target` along one method's curve (rows in sweep order).
-MatchedRow match_one(const std::string& method, const std::vector<const BenchRow*>& pts, double target) {
+MatchedRow match_one(const std::string& method, const std::vector<const BenchRow*>& pts, double target,
+                     double BenchRow::*time) {
   MatchedRow m;
   m.method = method;
   const double eps = 1e-9 * std::max(1.0, std::abs(target));
@@ -45,11 +46,11 @@ MatchedRow match_one(const std::string& method, const std::vector<const BenchRow
   // two-level default's own error); otherwise interpolate between neighbours.
   std::optional<double> best;
   for (const BenchRow* p : pts)
-    if (std::abs(p->horizon_mean_px - target) <= eps) best = std::min(best.value_or(p->frame_ms_median), p->frame_ms_median);
+    if (std::abs(p->horizon_mean_px - target) <= eps) best = std::min(best.value_or(p->*time), p->*time);
   const bool exact = best.has_value();
   for (size_t k = 0; !exact && k + 1 < pts.size(); ++k) {
     const double e0 = pts[k]->horizon_mean_px, e1 = pts[k + 1]->horizon_mean_px;
-    const double t0 = pts[k]->frame_ms_median, t1 = pts[k + 1]->frame_ms_median;
+    const double t0 = pts[k]->*time, t1 = pts[k + 1]->*time;
     if (target < std::min(e0, e1) - eps || target > std::max(e0, e1) + eps) continue;
     const double ms = std::abs(e1 - e0) <= eps ? std::min(t0, t1) : t0 + (target - e0) / (e1 - e0) * (t1 - t0);
     best = std::min(best.value_or(ms), ms);
@@ -62,14 +63,14 @@ MatchedRow match_one(const std::string& method, const std::vector<const BenchRow
   const bool all_below = std::all_of(pts.begin(), pts.end(), [&](const BenchRow* p) { return p->horizon_mean_px < target; });
   if (all_below) {
     m.kind = MatchKind::AtMost;
-    m.frame_ms = (*std::min_element(pts.begin(), pts.end(), [](auto a, auto b) {
-                   return a->frame_ms_median < b->frame_ms_median;
-                 }))->frame_ms_median;
+    m.frame_ms = (*std::min_element(pts.begin(), pts.end(), [time](auto a, auto b) {
+                   return a->*time < b->*time;
+                 }))->*time;
   } else {
     m.kind = MatchKind::NotReached;
-    m.frame_ms = (*std::min_element(pts.begin(), pts.end(), [](auto a, auto b) {
+    m.frame_ms = (*std::min_element(pts.begin(), pts.end(), [time](auto a, auto b) {
                    return a->horizon_mean_px < b->horizon_mean_px;
-                 }))->frame_ms_median;
+                 }))->*time;
   }
   return m;
 }
@@ -104,9 +105,10 @@ std::string how_text(MatchKind k) {
 
 }  // namespace
 
-std::vector<MatchedRow> match_horizon_error(const std::vector<BenchRow>& rows, double target_px) {
+std::vector<MatchedRow> match_horizon_error(const std::vector<BenchRow>& rows, double target_px,
+                                            double BenchRow::*time) {
   std::vector<MatchedRow> out;
-  for (const auto& [method, pts] : by_method(rows)) out.push_back(match_one(method, pts, target_px));
+  for (const auto& [method, pts] : by_method(rows)) out.push_back(match_one(method, pts, target_px, time));
   const auto tl = std::find_if(out.begin(), out.end(), [](const MatchedRow& m) { return m.method == "twolevel"; });
   if (tl != out.end() && (tl->kind == MatchKind::Measured || tl->kind == MatchKind::Interpolated) &&
       tl->frame_ms > 0.0)
@@ -121,7 +123,7 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
        "lod_ms_median,triangles_median,error_samples,horizon_mean_px,horizon_max_px,depth_rel_p95,"
        "depth_rel_max,psnr_db,holes_mean,hole_fraction,interior_holes_mean,enclosed_holes_mean,bound_px_median,"
        "bound_px_max,vs_invocations_median,fs_invocations_median,primitives_median,draw_calls_median,"
-       "upload_bytes_median\n";
+       "upload_bytes_median,cpu_ms_median\n";
   for (const auto& r : rows) {
     o << csv_field(r.method) << ',' << (r.knob ? csv_field(r.knob->name) : "") << ','
       << (r.knob ? num(r.knob->value) : "") << ',' << (r.knob ? csv_field(r.knob->unit) : "") << ','
@@ -133,7 +135,8 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
       << num(r.interior_holes_mean) << ',' << num(r.enclosed_holes_mean) << ',' << opt(r.bound_px_median) << ','
       << opt(r.bound_px_max) << ',' << fmt("%.10g", r.vs_invocations_median) << ','
       << fmt("%.10g", r.fs_invocations_median) << ',' << fmt("%.10g", r.primitives_median) << ','
-      << fmt("%.10g", r.draw_calls_median) << ',' << fmt("%.10g", r.upload_bytes_median) << '\n';
+      << fmt("%.10g", r.draw_calls_median) << ',' << fmt("%.10g", r.upload_bytes_median) << ','
+      << fmt("%.4f", r.cpu_ms_median) << '\n';
   }
 }
 
@@ -181,13 +184,15 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
   o << "\n## Work per frame\n\n"
     << "Hardware-independent work, medians over the frames: vertex and fragment shader invocations and "
        "primitives submitted (pipeline statistics queries, every pass including the sky), draw calls, bytes "
-       "uploaded to the GPU. docs/bench.md.\n\n"
-    << "| method | knob | vertex invocations | fragment invocations | primitives | draw calls | bytes uploaded |\n"
-    << "|---|---|---|---|---|---|---|\n";
+       "uploaded to the GPU; process CPU time per frame (every thread, llvmpipe's included: what the frame "
+       "costs in CPU work, unlike the wall clock barely changed by other load on the machine). docs/bench.md.\n\n"
+    << "| method | knob | vertex invocations | fragment invocations | primitives | draw calls | bytes uploaded | CPU ms |\n"
+    << "|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
     o << "| " << r.method << " | " << knob_text(r) << " | " << fmt("%.0f", r.vs_invocations_median) << " | "
       << fmt("%.0f", r.fs_invocations_median) << " | " << fmt("%.0f", r.primitives_median) << " | "
-      << fmt("%.0f", r.draw_calls_median) << " | " << fmt("%.0f", r.upload_bytes_median) << " |\n";
+      << fmt("%.0f", r.draw_calls_median) << " | " << fmt("%.0f", r.upload_bytes_median) << " | "
+      << fmt("%.2f", r.cpu_ms_median) << " |\n";
 
   o << "\n## Matched horizon error\n\n";
   if (!target_px) {
@@ -198,15 +203,18 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
     << "). Each method's median frame time at that error: a point at the target gives its own time, else "
        "linear interpolation between neighbouring points of its sweep (docs/bench.md); ratio = method ms / "
        "twolevel ms (how many times faster the two-level method is at equal horizon error).\n\n"
-    << "| method | frame ms at target | how | ratio vs twolevel |\n|---|---|---|---|\n";
-  for (const auto& m : match_horizon_error(rows, *target_px)) {
-    std::string ratio = "n/a (no twolevel time at the target)";
-    if (m.ratio) {
-      const std::string v = fmt("%.2f", *m.ratio);
-      ratio = m.kind == MatchKind::AtMost ? "<= " + v : m.kind == MatchKind::NotReached ? "> " + v : v;
-    }
-    o << "| " << m.method << " | " << matched_ms_text(m) << " | " << how_text(m.kind) << " | " << ratio << " |\n";
-  }
+    << "| method | frame ms at target | how | ratio vs twolevel | CPU ms at target | CPU ratio |\n"
+    << "|---|---|---|---|---|---|\n";
+  auto ratio_text = [](const MatchedRow& m) {
+    if (!m.ratio) return std::string("n/a (no twolevel time at the target)");
+    const std::string v = fmt("%.2f", *m.ratio);
+    return m.kind == MatchKind::AtMost ? "<= " + v : m.kind == MatchKind::NotReached ? "> " + v : v;
+  };
+  const auto wall = match_horizon_error(rows, *target_px);
+  const auto cpu = match_horizon_error(rows, *target_px, &BenchRow::cpu_ms_median);
+  for (size_t k = 0; k < wall.size(); ++k)
+    o << "| " << wall[k].method << " | " << matched_ms_text(wall[k]) << " | " << how_text(wall[k].kind) << " | "
+      << ratio_text(wall[k]) << " | " << matched_ms_text(cpu[k]) << " | " << ratio_text(cpu[k]) << " |\n";
 }
 
 bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>& rows,

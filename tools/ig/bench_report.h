@@ -26,6 +26,8 @@ struct BenchRow {
   // primitives from pipeline statistics queries, draw calls, bytes uploaded.
   double vs_invocations_median = 0.0, fs_invocations_median = 0.0, primitives_median = 0.0;
   double draw_calls_median = 0.0, upload_bytes_median = 0.0;
+  // Process CPU time per frame (all threads, llvmpipe's rasteriser included).
+  double cpu_ms_median = 0.0;
   int error_samples = 0;
   double horizon_mean_px = 0.0;  // mean over samples of each frame's column mean
   double horizon_max_px = 0.0;   // max over samples
@@ -61,7 +63,9 @@ struct MatchedRow {
 // (least to most accurate) and interpolate linearly in (horizon_mean_px,
 // frame_ms_median) between neighbours that bracket the target (the smallest
 // such time when the curve crosses it more than once).
-std::vector<MatchedRow> match_horizon_error(const std::vector<BenchRow>& rows, double target_px);
+// `time` picks the time measure: the wall-clock frame time, or the CPU time.
+std::vector<MatchedRow> match_horizon_error(const std::vector<BenchRow>& rows, double target_px,
+                                            double BenchRow::*time = &BenchRow::frame_ms_median);
 
 // The run's context for results.md.
 struct BenchContext {
