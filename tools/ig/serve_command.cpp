@@ -22,12 +22,14 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "host_services.h"
 #include "io/net/udp_socket.h"
 #include "io/recording.h"
 #include "io/wire/cigi.h"
 #include "pose_feed.h"
 #include "run_outputs.h"
 #include "scenario_runner.h"
+#include "scene_setup.h"
 #ifdef IG_WITH_CAN
 #include "io/can/can_pose_source.h"
 #endif
@@ -52,6 +54,8 @@ constexpr const char* kUsage =
     "  pose extrapolated to the frame's display time) or sync (CIGI synchronous: one frame per\n"
     "  host IG Control, answered with Start Of Frame; needs --cigi). Default: the config's\n"
     "  live.latency (docs/pose-filter.md).\n"
+    "  --cigi-reply: Start Of Frame every frame, with the answers to the host's HAT/HOT and\n"
+    "  line-of-sight requests (docs/host-services.md).\n"
     "  --can IFNAME: SocketCAN pose source, CANaerospace and the CAN FD pose (docs/can.md);\n"
     "  altitude from id 322 unless --can-altitude, any node unless --can-node, fields\n"
     "  older than --can-max-age-ms (100) are stale. A missing or down interface is retried.\n";
@@ -193,6 +197,12 @@ int run_serve_command(const std::vector<std::string>& argv) {
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
                    "packets (CIGI, FlightGear, native geodetic) are counted as rejected\n";
     const io::Pose initial = runner.pose_at(0.0);
+    // CIGI host services answer on the reply port, from the terrain as drawn.
+    std::unique_ptr<HostServices> services;
+    if (cigi_reply)
+      services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
+                                                geodetic_placer(runner.heightfield()),
+                                                local_to_geodetic(runner.heightfield()));
 #ifdef IG_WITH_MODBUS
     std::unique_ptr<ModbusLink> modbus;
     if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, latency, args.quiet);
@@ -230,6 +240,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
           [&](std::span<const std::uint8_t> d, double t, const sockaddr_in&) {
             if (recorder) recorder->write(src.protocol, d, t);
             feed.intake().handle(src.protocol, d, t);
+            if (services && src.protocol == io::Protocol::Cigi) services->take(d);
           },
           max_datagrams);
     };
@@ -325,7 +336,8 @@ int run_serve_command(const std::vector<std::string>& argv) {
         last_sof = io::wire::encode_cigi_start_of_frame(
             std::uint32_t(k), feed.intake().last_host_frame().value_or(0),
             std::uint32_t(std::llround((frame_start - start) * 1e5)), io::wire::kCigiModeOperate, false);
-        cigi_reply->send(*last_sof);
+        if (services) cigi_reply->send(services->frame_datagram(*last_sof, pose));
+        else cigi_reply->send(*last_sof);
       }
       outputs.frame(runner, f, capture, last, total, [&](std::vector<stats::Cell>& row) { feed.append_columns(row); });
 #ifdef IG_WITH_MODBUS
@@ -366,6 +378,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
                             {"datagrams", datagrams},
                             {"kernel_receive_timestamps", kernel_stamped}};
     if (cigi_source) extra["cigi_sync"] = {{"frames", sync_frames}, {"waits", sync_waits}};
+    if (services) extra["host_services"] = services->summary();
     if (recorder) extra["recording"] = {{"file", *args.record}, {"datagrams", recorder->count()}};
 #ifdef IG_WITH_CAN
     if (can) extra["can"] = can->summary();

@@ -1,0 +1,228 @@
+#include "host_services.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace ig::app {
+
+using namespace io::wire;
+
+namespace {
+
+constexpr double kDeg = 180.0 / M_PI;
+
+bool is_los(const CigiRequest& r) { return !std::holds_alternative<HatHotRequest>(r); }
+
+std::size_t response_size(const CigiRequest& r) {
+  if (const auto* h = std::get_if<HatHotRequest>(&r))
+    return h->type == HatHotType::Extended ? kCigiHatHotExtendedResponseSize : kCigiHatHotResponseSize;
+  const bool ext = std::visit(
+      [](const auto& q) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(q)>, HatHotRequest>) return false;
+        else return q.extended;
+      },
+      r);
+  return ext ? kCigiLosExtendedResponseSize : kCigiLosResponseSize;
+}
+
+// Azimuth from north (clockwise) and elevation from the horizon of a unit
+// vector in local ENU, degrees, as CIGI gives surface normals.
+void azimuth_elevation(const glm::dvec3& n, float& az, float& el) {
+  az = float(std::atan2(n.x, n.y) * kDeg);
+  el = float(std::asin(std::clamp(n.z, -1.0, 1.0)) * kDeg);
+}
+
+// CIGI entity body axes (x forward, y right, z down) in local ENU.
+struct BodyAxes {
+  glm::dvec3 forward, right, down;
+};
+BodyAxes body_axes(const io::Pose& p) {
+  return {io::forward_of(p.attitude), io::right_of(p.attitude), -io::up_of(p.attitude)};
+}
+
+}  // namespace
+
+HostServices::HostServices(const terrain::Heightfield& hf, double earth_radius_m, io::GeodeticToLocal to_local,
+                           LocalToGeodetic to_geodetic, HostServicesOptions options)
+    : query_(hf, earth_radius_m),
+      to_local_(std::move(to_local)),
+      to_geodetic_(std::move(to_geodetic)),
+      options_(options) {}
+
+void HostServices::take(std::span<const std::uint8_t> datagram) {
+  const CigiRequests r = decode_cigi_requests(datagram);
+  if (!r.host_frame) return;  // not a host datagram: the pose intake counts it
+  host_frame_ = *r.host_frame;
+  for (QueryReject why : r.rejects) drop(query_reject_name(why));
+  if (r.overflow) counters_.dropped["too-many-in-datagram"] += r.overflow;
+  for (const CigiRequest& q : r.requests) {
+    ++counters_.requests;
+    const auto key = std::make_pair(kind(q), request_id(q));
+    const std::uint8_t period = update_period(q);
+    if (period > 0) {
+      if (!periodic_.count(key) && periodic_.size() >= options_.max_periodic) {
+        drop("too-many-periodic");
+        continue;
+      }
+      periodic_[key] = Periodic{q, frame_};  // first answer in this frame, then every period-th
+      continue;
+    }
+    if (periodic_.erase(key)) ++counters_.cancelled;  // the same id with period 0 ends it
+    if (queue_.size() >= options_.max_pending) {
+      drop("queue-full");
+      continue;
+    }
+    queue_.push_back(Pending{q, frame_});
+  }
+}
+
+std::vector<CigiResponse> HostServices::answer_frame(const io::Pose& ownship) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<CigiResponse> out;
+  std::size_t hat_hot = 0, los = 0, bytes = kCigiStartOfFrameSize;
+  auto fits = [&](const CigiRequest& q) {
+    if (is_los(q) ? los >= options_.max_los_per_frame : hat_hot >= options_.max_hat_hot_per_frame) return false;
+    return bytes + response_size(q) <= options_.max_datagram_bytes;
+  };
+  auto spend = [&](const CigiRequest& q) {
+    ++(is_los(q) ? los : hat_hot);
+    bytes += response_size(q);
+    out.push_back(answer(q, ownship));
+  };
+  for (auto& [key, p] : periodic_) {
+    if (p.next_frame > frame_ || !fits(p.request)) continue;  // not due, or due again next frame
+    spend(p.request);
+    ++counters_.periodic_answers;
+    p.next_frame = frame_ + update_period(p.request);
+  }
+  while (!queue_.empty() && fits(queue_.front().request)) {
+    if (queue_.front().frame < frame_) ++counters_.deferred;
+    spend(queue_.front().request);
+    queue_.pop_front();
+  }
+  ++frame_;
+  last_frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (!out.empty()) {
+    ++frames_with_work_;
+    sum_frame_ms_ += last_frame_ms_;
+    max_frame_ms_ = std::max(max_frame_ms_, last_frame_ms_);
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> HostServices::frame_datagram(const std::array<std::uint8_t, kCigiStartOfFrameSize>& sof,
+                                                       const io::Pose& ownship) {
+  std::vector<std::uint8_t> d(sof.begin(), sof.end());
+  for (const CigiResponse& r : answer_frame(ownship)) append_cigi_response(r, false, d);
+  return d;
+}
+
+CigiResponse HostServices::answer(const CigiRequest& request, const io::Pose& ownship) {
+  ++counters_.answered;
+  CigiResponse r = std::visit(
+      [&](const auto& q) -> CigiResponse {
+        using T = std::decay_t<decltype(q)>;
+        if constexpr (std::is_same_v<T, HatHotRequest>) return hat_hot(q, ownship);
+        else if constexpr (std::is_same_v<T, LosSegmentRequest>) return los_segment(q, ownship);
+        else return los_vector(q, ownship);
+      },
+      request);
+  const bool valid = std::visit([](const auto& a) { return a.valid; }, r);
+  if (!valid) ++counters_.invalid;
+  return r;
+}
+
+std::optional<glm::dvec3> HostServices::place(const glm::dvec3& p, CigiCoords c, std::uint16_t entity,
+                                               const io::Pose& ownship) {
+  if (c == CigiCoords::Geodetic) return to_local_ ? to_local_(p.x, p.y, p.z) : std::nullopt;
+  if (entity != kCigiOwnshipEntity) return std::nullopt;  // only the ownship's pose is known here
+  const BodyAxes b = body_axes(ownship);
+  return ownship.position + p.x * b.forward + p.y * b.right + p.z * b.down;
+}
+
+HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& ownship) {
+  HatHotResponse out;
+  out.id = r.id;
+  out.extended = r.type == HatHotType::Extended;
+  out.type = r.type;
+  out.host_frame = host_frame_;
+  const auto p = place(r.point, r.coords, r.entity, ownship);
+  const auto s = p ? query_.surface_at(p->x, p->y) : std::nullopt;
+  if (!s) return out;  // outside the terrain (or an unknown entity): valid clear
+  out.valid = true;
+  out.hot_m = s->height_m;
+  out.hat_m = p->z - s->height_m;
+  azimuth_elevation(s->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
+  return out;
+}
+
+void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHit>& hit, CigiCoords coords,
+                            const io::Pose& ownship) {
+  out.visible = !hit;
+  out.range_valid = hit.has_value();
+  if (!hit) return;
+  out.range_m = hit->range_m;
+  azimuth_elevation(hit->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
+  if (!out.extended) return;
+  if (coords == CigiCoords::Entity) {
+    const BodyAxes b = body_axes(ownship);
+    const glm::dvec3 d = hit->point - ownship.position;
+    out.point = {glm::dot(d, b.forward), glm::dot(d, b.right), glm::dot(d, b.down)};
+  } else if (const auto g = to_geodetic_ ? to_geodetic_(hit->point) : std::nullopt) {
+    out.point = *g;
+  } else {
+    out.valid = false;  // a projected DEM: no way back to latitude / longitude here
+  }
+}
+
+LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& ownship) {
+  LosResponse out;
+  out.id = r.id;
+  out.extended = r.extended;
+  out.host_frame = host_frame_;
+  const auto from = place(r.source, r.source_coords, r.entity, ownship);
+  const auto to = place(r.destination, r.destination_coords,
+                        r.destination_entity_valid ? r.destination_entity : r.entity, ownship);
+  if (!from || !to || !query_.inside(from->x, from->y)) return out;
+  out.valid = true;
+  fill_hit(out, query_.segment(*from, *to), r.response_coords, ownship);
+  return out;
+}
+
+LosResponse HostServices::los_vector(const LosVectorRequest& r, const io::Pose& ownship) {
+  LosResponse out;
+  out.id = r.id;
+  out.extended = r.extended;
+  out.host_frame = host_frame_;
+  const auto from = place(r.source, r.source_coords, r.entity, ownship);
+  if (!from || !query_.inside(from->x, from->y)) return out;
+  const double az = r.azimuth_deg / kDeg, el = r.elevation_deg / kDeg;
+  glm::dvec3 dir;
+  if (r.source_coords == CigiCoords::Geodetic) {
+    dir = {std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el)};
+  } else {  // from the entity's x axis, elevation up from its x-y plane
+    const BodyAxes b = body_axes(ownship);
+    dir = std::cos(el) * std::cos(az) * b.forward + std::cos(el) * std::sin(az) * b.right - std::sin(el) * b.down;
+  }
+  out.valid = true;
+  fill_hit(out, query_.ray(*from, dir, r.min_range_m, r.max_range_m), r.response_coords, ownship);
+  return out;
+}
+
+nlohmann::json HostServices::summary() const {
+  return {{"requests", counters_.requests},
+          {"answered", counters_.answered},
+          {"invalid", counters_.invalid},
+          {"deferred", counters_.deferred},
+          {"periodic_answers", counters_.periodic_answers},
+          {"cancelled", counters_.cancelled},
+          {"dropped", counters_.dropped},
+          {"pending", queue_.size()},
+          {"periodic", periodic_.size()},
+          {"frames_with_answers", frames_with_work_},
+          {"answer_ms_mean", frames_with_work_ ? sum_frame_ms_ / double(frames_with_work_) : 0.0},
+          {"answer_ms_max", max_frame_ms_}};
+}
+
+}  // namespace ig::app
