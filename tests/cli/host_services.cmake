@@ -1,0 +1,10 @@
+# ig serve's CIGI host services (issue 15): a test host on loopback drives
+# HAT/HOT, LOS segment and LOS vector requests (basic and extended, geodetic
+# and ownship-relative, big- and little-endian, one periodic request then its
+# cancellation) in synchronous operation, and checks every answer against
+# the Sierra DEM. Ports 472xx. Skips without IG_DEM_DIR.
+add_test(NAME cli.serve.cigi_host_services
+  COMMAND bash ${CMAKE_SOURCE_DIR}/tests/tools/host_services.sh $<TARGET_FILE:ig> $<TARGET_FILE:cigi_query_host>
+          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/host_services 47200 10)
+set_tests_properties(cli.serve.cigi_host_services PROPERTIES LABELS "cli;net" SKIP_RETURN_CODE 77
+  PASS_REGULAR_EXPRESSION "PASS host services" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
