@@ -49,6 +49,7 @@ struct TwoLevelSpec {
   std::string beta = "linear";  // band weight template: linear | gaussian
   int max_level1 = 1025;      // top of the Level1 ladder (33, 65, ..., 1025)
   int band_stride = 2;        // band geometry every k samples
+  std::string band = "inline";  // band uv1 / beta: inline (in Level0's shader) | target (the paper's separate pass)
   bool eye_guard = true;      // Level1 also covers the ground under a low eye
   bool level0_envelope = false;  // Level0 lifted to a conservative upper envelope (no sky through it)
   bool predict_size = true;      // Level1 size from a ray-cast prediction of R (false: the paper's steps)

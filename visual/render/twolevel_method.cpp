@@ -211,7 +211,10 @@ TwoLevelMethod::~TwoLevelMethod() {
   for (auto& pair : queries_) glDeleteQueries(2, pair);
 }
 
-std::vector<std::string> TwoLevelMethod::pass_names() const { return {"level1", "band", "level0", "count"}; }
+std::vector<std::string> TwoLevelMethod::pass_names() const {
+  if (options_.band_inline) return {"level1", "level0", "count"};  // the band is shaded inside level0
+  return {"level1", "band", "level0", "count"};
+}
 
 std::vector<std::string> TwoLevelMethod::column_names() const {
   return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit"};
@@ -447,9 +450,13 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     }
 
     // Pass 2: band into its own RGBA16F target (uv relative to the centre, beta, mask).
-    begin_pass("band");
-    ensure_band_target(target.width(), target.height());
-    if (band_visible_ && !skipped("band")) {  // else Level0 ignores the band target (u_band_valid), so no clear either
+    const bool band_on = band_visible_ && !skipped("band");
+    if (band_on) upload_beta_template(n, band_w_);
+    if (!options_.band_inline) {
+      begin_pass("band");
+      ensure_band_target(target.width(), target.height());
+    }
+    if (band_on && !options_.band_inline) {  // else Level0 ignores the band target (u_band_valid), so no clear either
       const GLuint band_fbo = band_target_->fbo();
       glBindFramebuffer(GL_FRAMEBUFFER, band_fbo);
       const float clear_band[4] = {0, 0, 0, 0};
@@ -459,7 +466,6 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       glClearNamedFramebufferfv(band_fbo, GL_COLOR, 0, clear_band);
       glClearNamedFramebufferfv(band_fbo, GL_DEPTH, 0, &clear_depth);
       SizeMeshes& m = meshes_for(n, band_w_);
-      upload_beta_template(n, band_w_);
       band_program_.use();
       scene_.bind_common(band_program_, camera);
       glBindTextureUnit(2, beta_tex_);
@@ -482,8 +488,11 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
     const glm::ivec2 eye_sample(int(std::floor(camera.position.x / spacing.x)),
                                 int(std::floor(camera.position.y / spacing.y)));
-    glBindTextureUnit(3, band_target_->color_texture());
-    glBindTextureUnit(4, band_target_->depth_texture());
+    if (band_target_) {
+      glBindTextureUnit(3, band_target_->color_texture());
+      glBindTextureUnit(4, band_target_->depth_texture());
+    }
+    glBindTextureUnit(2, beta_tex_);
     glBindVertexArray(level0_vao_);
     for (auto* program : {&level0_program_, &level0_clipped_program_}) {
       const lod::IndexRuns& runs = level0_runs_[program == &level0_program_ ? 0 : 1];
@@ -499,7 +508,11 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
         program->set("u_band", 3);
         program->set("u_band_depth", 4);
         program->set("u_band_rect", glm::vec4(band_rect_));
-        program->set("u_band_valid", band_visible_ && !skipped("band") ? 1 : 0);
+        program->set("u_band_valid", band_on ? 1 : 0);
+        program->set("u_band_inline", options_.band_inline ? 1 : 0);
+        program->set("u_beta_template", 2);
+        program->set("u_grown_half", 0.5f * float(n - 1) + float(band_w_));
+        program->set("u_level1_half", 0.5f * float(n - 1));
         program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
         program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
         draw_counts_.assign(runs.count.begin(), runs.count.end());

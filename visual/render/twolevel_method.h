@@ -38,6 +38,10 @@ struct TwoLevelOptions {
   bool gaussian_beta = false;     // beta template: linear (default) or Gaussian
   int max_level1 = 1025;          // top of the ladder (vertices a side)
   int band_stride = 2;            // band geometry every k samples (it only carries uv)
+  // The band's uv1 and beta found in Level0's fragment shader by marching
+  // the pixel's ray against the height texture, only near the ring (true),
+  // or by the paper's separate band pass into its own target (false).
+  bool band_inline = true;
   // Level0 lifted to a conservative upper envelope (lod/level0_envelope.h):
   // no ridge cut below the skyline, so no sky through Level0 terrain.
   bool level0_envelope = false;
