@@ -9,14 +9,21 @@
 // outside the terrain invalid, a periodic request answered every 2nd frame
 // until cancelled. Prints PASS or FAIL lines.
 //
-//   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES
+//   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES [--bench HOT LOS [SPREAD_M]]
+//
+// --bench: no checks; HOT HAT/HOT and LOS requests (half segments, half
+// vectors, 5-20 km) every frame at most 60 frames a second, and the time
+// from sending a frame to receiving its answers (docs/results.md). HAT/HOT
+// points are spread over the whole DEM, or within SPREAD_M of the ownship.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 #include <variant>
 #include <vector>
 
@@ -51,8 +58,9 @@ struct Expect {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::fprintf(stderr, "usage: cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES\n");
+  const bool bench = (argc == 8 || argc == 9) && std::string(argv[5]) == "--bench";
+  if (argc != 5 && !bench) {
+    std::fprintf(stderr, "usage: cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES [--bench HOT LOS [SPREAD_M]]\n");
     return 2;
   }
   const ig::terrain::Heightfield hf = ig::terrain::load_dem(argv[1]);
@@ -84,6 +92,78 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(15);
   std::uniform_real_distribution<double> ux(0.05 * hf.extent_x_m(), 0.95 * hf.extent_x_m()),
       uy(0.05 * hf.extent_y_m(), 0.95 * hf.extent_y_m()), uaz(-180, 180);
+  if (bench) {
+    const int n_hot = std::stoi(argv[6]), n_los = std::stoi(argv[7]);
+    const double spread = argc == 9 ? std::stod(argv[8]) : 0.0;
+    const dvec3 own_at(0.5 * hf.extent_x_m(), 0.4 * hf.extent_y_m(), 4000.0);
+    std::uniform_real_distribution<double> near(-spread, spread);
+    std::vector<double> latency_ms;
+    auto tick = std::chrono::steady_clock::now();
+    std::size_t answers = 0;
+    for (int k = 1; k <= frames; ++k) {
+      const bool swap = k % 2 == 1;
+      PoseMessage ownship;
+      ownship.frame = PoseMessage::Frame::Geodetic;
+      ownship.position = geodetic(own_at);
+      std::vector<std::uint8_t> d = encode_cigi_host_datagram(std::uint32_t(k), kCigiModeOperate, ownship, swap);
+      auto add = [&](const auto& packet) { d.insert(d.end(), packet.begin(), packet.end()); };
+      for (int n = 0; n < n_hot; ++n) {
+        HatHotRequest r;
+        r.id = std::uint16_t(n);
+        r.type = HatHotType(n % 3);
+        r.point = geodetic(spread > 0 ? dvec3(own_at.x + near(rng), own_at.y + near(rng), 3000.0)
+                                      : dvec3(ux(rng), uy(rng), 3000.0));
+        add(encode_cigi_hat_hot_request(r, swap));
+      }
+      for (int n = 0; n < n_los; ++n) {
+        const dvec3 a(ux(rng), uy(rng), 0.0);
+        const double az = uaz(rng) * M_PI / 180, dist = 5000.0 + 15000.0 * (n % 7) / 6.0;
+        const dvec3 from(a.x, a.y, hf.sample_surface(a.x, a.y) + 2000.0);
+        if (n % 2 == 0) {
+          LosSegmentRequest r;
+          r.id = std::uint16_t(n);
+          r.extended = true;
+          r.source = geodetic(from);
+          dvec3 to = from + dist * dvec3(std::sin(az), std::cos(az), 0.0);
+          to.x = std::clamp(to.x, 0.0, hf.extent_x_m());
+          to.y = std::clamp(to.y, 0.0, hf.extent_y_m());
+          to.z = hf.sample_surface(to.x, to.y);
+          r.destination = geodetic(to);
+          add(encode_cigi_los_segment_request(r, swap));
+        } else {
+          LosVectorRequest r;
+          r.id = std::uint16_t(n);
+          r.extended = true;
+          r.source = geodetic(from);
+          r.azimuth_deg = float(az * 180 / M_PI);
+          r.elevation_deg = float(-5.0 - 25.0 * (n % 5) / 4.0);
+          r.max_range_m = float(dist);
+          add(encode_cigi_los_vector_request(r, swap));
+        }
+      }
+      const auto sent = std::chrono::steady_clock::now();
+      to_ig.send(d);
+      for (;;) {
+        const auto dg = next_datagram();
+        const auto sof = decode_cigi_start_of_frame(dg);
+        if (!sof.sof || sof.sof->last_host_frame != std::uint32_t(k)) continue;
+        latency_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count());
+        if (const auto r = decode_cigi_responses(dg)) answers += r->size();
+        break;
+      }
+      tick += std::chrono::microseconds(16667);  // a 60 Hz host at most
+      std::this_thread::sleep_until(tick);
+    }
+    std::sort(latency_ms.begin(), latency_ms.end());
+    auto pct = [&](double q) { return latency_ms[std::min(latency_ms.size() - 1, std::size_t(q * latency_ms.size()))]; };
+    std::printf("bench: %d frames, %d HAT/HOT (%s) + %d LOS requests a frame, %zu answers (%.1f a frame)\n", frames,
+                n_hot, spread > 0 ? ("within " + std::to_string(int(spread)) + " m of the ownship").c_str() : "whole DEM",
+                n_los, answers, double(answers) / frames);
+    std::printf("request -> response latency (send to the answers' datagram received): median %.2f ms, p95 %.2f ms, "
+                "max %.2f ms\n",
+                pct(0.5), pct(0.95), latency_ms.back());
+    return 0;
+  }
   ig::io::Pose own;  // the ownship the IG renders (synchronous: as sent)
   own.position = {0.5 * hf.extent_x_m(), 0.4 * hf.extent_y_m(), 0.0};
   own.position.z = hf.sample_surface(own.position.x, own.position.y) + 1500.0;

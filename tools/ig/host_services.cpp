@@ -90,6 +90,16 @@ std::vector<CigiResponse> HostServices::answer_frame(const io::Pose& ownship) {
     bytes += response_size(q);
     out.push_back(answer(q, ownship));
   };
+  // HAT/HOT points are scattered over a DEM the renderer has just pushed out
+  // of the caches: start fetching the samples of those about to be answered
+  // (geodetic ones; entity offsets are placed from the pose below).
+  std::size_t ahead = 0;
+  for (auto it = queue_.begin(); it != queue_.end() && ahead < options_.max_hat_hot_per_frame; ++it) {
+    const auto* h = std::get_if<HatHotRequest>(&it->request);
+    if (!h || h->coords != CigiCoords::Geodetic || !to_local_) continue;
+    ++ahead;
+    if (const auto p = to_local_(h->point.x, h->point.y, h->point.z)) query_.prefetch(p->x, p->y);
+  }
   for (auto& [key, p] : periodic_) {
     if (p.next_frame > frame_ || !fits(p.request)) continue;  // not due, or due again next frame
     spend(p.request);

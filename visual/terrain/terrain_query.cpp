@@ -73,6 +73,17 @@ std::optional<SurfacePoint> TerrainQuery::surface_at(double x_m, double y_m) con
   return surface_in_cell(hf_, i, j, fx, fy);
 }
 
+void TerrainQuery::prefetch(double x_m, double y_m) const {
+  if (!inside(x_m, y_m)) return;
+  const int i = std::clamp(int(x_m / hf_.spacing_x_m), 0, hf_.width - 2);
+  const int j = std::clamp(int(y_m / hf_.spacing_y_m), 0, hf_.height - 2);
+  const float* row = hf_.heights.data() + std::size_t(j) * std::size_t(hf_.width) + std::size_t(i);
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(row);
+  __builtin_prefetch(row + hf_.width);
+#endif
+}
+
 std::optional<LosHit> TerrainQuery::segment(const glm::dvec3& from, const glm::dvec3& to) const {
   if (!finite3(from) || !finite3(to)) return std::nullopt;
   // The target as seen in the source's tangent frame (lowered by the drop).

@@ -52,6 +52,10 @@ class TerrainQuery {
   // either one's.
   std::optional<SurfacePoint> surface_at(double x_m, double y_m) const;
 
+  // Starts fetching the samples surface_at(x, y) will read: a batch of
+  // scattered queries prefetched first waits on memory once, not per query.
+  void prefetch(double x_m, double y_m) const;
+
   // First point of the terrain on the segment from -> to (from's end
   // first); nullopt when the segment is clear, leaves the footprint before
   // meeting terrain, or the input is not finite. A source under the terrain
