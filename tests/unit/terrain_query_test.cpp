@@ -127,13 +127,23 @@ LD dot(LV a, LV b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 // Nearest hit in [t0, t1] along unit d from o over every triangle of every
 // cell whose box the segment's footprint touches (Moller-Trumbore, long
 // double, edges included). -1 when none.
-LD brute_force(const Heightfield& hf, dvec3 o_in, dvec3 d_in, double t0, double t1) {
+// radius > 0: every sample lowered by its curvature drop from o's (x, y), as
+// the renderer draws the terrain for an eye at o.
+LD brute_force(const Heightfield& hf, dvec3 o_in, dvec3 d_in, double t0, double t1, double radius = 0.0) {
   const LV o{o_in.x, o_in.y, o_in.z}, d{d_in.x, d_in.y, d_in.z};
   const double xa = std::min(o_in.x + t0 * d_in.x, o_in.x + t1 * d_in.x), xb = std::max(o_in.x + t0 * d_in.x, o_in.x + t1 * d_in.x);
   const double ya = std::min(o_in.y + t0 * d_in.y, o_in.y + t1 * d_in.y), yb = std::max(o_in.y + t0 * d_in.y, o_in.y + t1 * d_in.y);
   const int i0 = std::max(0, int(std::floor(xa / hf.spacing_x_m)) - 1), i1 = std::min(hf.width - 2, int(xb / hf.spacing_x_m) + 1);
   const int j0 = std::max(0, int(std::floor(ya / hf.spacing_y_m)) - 1), j1 = std::min(hf.height - 2, int(yb / hf.spacing_y_m) + 1);
-  auto vtx = [&](int i, int j) { return LV{LD(i) * hf.spacing_x_m, LD(j) * hf.spacing_y_m, LD(hf.at(i, j))}; };
+  auto vtx = [&](int i, int j) {
+    const LD x = LD(i) * hf.spacing_x_m, y = LD(j) * hf.spacing_y_m;
+    LD z = hf.at(i, j);
+    if (radius > 0) {  // R - sqrt(R^2 - d^2)
+      const LD d2 = (x - o.x) * (x - o.x) + (y - o.y) * (y - o.y), R = radius;
+      z -= d2 / (R + std::sqrt(R * R - d2));
+    }
+    return LV{x, y, z};
+  };
   LD best = -1;
   auto tri = [&](LV a, LV b, LV c) {
     const LV e1 = sub(b, a), e2 = sub(c, a), p = cross(d, e2);
@@ -213,6 +223,44 @@ TEST(TerrainQueryLos, RandomRaysMatchBruteForce) {
   EXPECT_GT(misses, 300);
 }
 
+// With curvature: the first hit on the triangles between the lowered samples
+// (a small radius so the drop is large on this 2.9 km terrain).
+TEST(TerrainQueryLos, CurvedRaysMatchBruteForceOnLoweredTriangles) {
+  const Heightfield hf = rough_hf(11);
+  const double R = 30000.0;
+  const TerrainQuery q(hf, R);
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> ux(0, hf.extent_x_m()), uy(0, hf.extent_y_m()), uz(300, 700);
+  std::uniform_real_distribution<double> ang(0, 2 * M_PI), el(-0.4, 0.05), rng01(0, 1);
+  int hits = 0, misses = 0, differ = 0;
+  const TerrainQuery flat(hf, 0.0);
+  for (int k = 0; k < 2000; ++k) {
+    const dvec3 from(ux(rng), uy(rng), uz(rng));
+    const double a = ang(rng), e = el(rng);
+    const dvec3 d(std::cos(e) * std::sin(a), std::cos(e) * std::cos(a), std::sin(e));
+    const double hi = 3000.0 * rng01(rng);
+    const auto got = q.ray(from, d, 0.0, hi);
+    const LD want = brute_force(hf, from, d, 0.0, hi, R);
+    if (want < 0) {
+      EXPECT_FALSE(got);
+      ++misses;
+      continue;
+    }
+    ++hits;
+    ASSERT_TRUE(got);
+    EXPECT_NEAR(got->range_m, double(want), 1e-6 * (1.0 + double(want)));
+    // Given back on the flat DEM at the same (x, y).
+    EXPECT_NEAR(got->point.x, from.x + got->range_m * d.x, 1e-6);
+    EXPECT_NEAR(got->point.z, q.surface_at(got->point.x, got->point.y)->height_m, 1e-9);
+    const auto f = flat.ray(from, d, 0.0, hi);
+    if (!f || std::abs(f->range_m - got->range_m) > 1.0) ++differ;
+  }
+  std::printf("curved rays: %d hits, %d misses, %d differ from flat by > 1 m\n", hits, misses, differ);
+  EXPECT_GT(hits, 300);
+  EXPECT_GT(misses, 300);
+  EXPECT_GT(differ, 100);
+}
+
 // Rays aimed a hair above (miss) or below (hit) a sample that stands above
 // its neighbours along the ray, at 0.5 degrees and shallower.
 TEST(TerrainQueryLos, GrazingRaysOverPeaks) {
@@ -281,7 +329,8 @@ TEST(TerrainQueryLos, SegmentsAndMisses) {
 }
 
 // With curvature the line bends up by drop(d) in the DEM frame: compare with
-// the bent line sampled every 0.25 m (first sample at or under the surface).
+// the bent line sampled every 0.25 m (first sample at or under the surface)
+// on the real DEM at the Earth's radius.
 TEST(TerrainQueryLos, CurvedLinesMatchSampledBentLine) {
   if (!dem_dir()) GTEST_SKIP() << "IG_DEM_DIR not set: real-DEM tests skipped";
   const Heightfield& hf = sierra();
@@ -314,8 +363,8 @@ TEST(TerrainQueryLos, CurvedLinesMatchSampledBentLine) {
     }
     ASSERT_TRUE(got);
     ++compared;
-    // 0.25 m sampling plus the 1 cm chord sag seen at a shallow angle.
-    EXPECT_NEAR(got->range_m, want, 0.25 + 0.01 / std::abs(std::sin(e)) + 1e-3);
+    // 0.25 m sampling; the drawn triangles lie within 0.2 mm of the smooth drop.
+    EXPECT_NEAR(got->range_m, want, 0.25 + 1e-3 / std::abs(std::sin(e)));
     const auto s = q.surface_at(got->point.x, got->point.y);
     EXPECT_NEAR(got->point.z, s->height_m, 1e-6);
     const auto f = flat.ray(from, d, 0.0, 60000.0);

@@ -13,6 +13,8 @@
 
 #include "terrain/ray_cast.h"
 
+#include "terrain/earth_curvature.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -43,7 +45,30 @@ struct Ray {
   double mx[3]{}, my[3]{}, mz[3]{};  // rows of the permute + shear transform
   double t_lo = -kSurfaceEpsM;  // smallest t accepted (then clamped to 0)
   double slack_abs = 0;         // absolute slack (metres) for box tests
+  Curvature curve;              // radius_m 0: flat
 };
+
+// A sample's height as drawn for the ray's curvature centre. A pure function
+// of (x, y): every cell sharing the sample lowers it bit for bit alike, so
+// the watertight edge test still holds.
+inline double drawn_height(const Ray& r, double x, double y, double h) {
+  if (r.curve.radius_m <= 0.0) return h;
+  return h - curvature_drop(std::hypot(x - r.curve.centre_x, y - r.curve.centre_y), r.curve.radius_m);
+}
+
+// A box's height range [lo, hi] over footprint [x0, x1] x [y0, y1] as drawn:
+// lowered by the drop at its farthest corner (lo) and its nearest point (hi),
+// widened by a hair so rounding of the per-sample drops cannot leave it.
+inline void drawn_range(const Ray& r, double x0, double x1, double y0, double y1, double& lo, double& hi) {
+  if (r.curve.radius_m <= 0.0) return;
+  const double cx = r.curve.centre_x, cy = r.curve.centre_y;
+  const double nx = std::max({x0 - cx, 0.0, cx - x1}), ny = std::max({y0 - cy, 0.0, cy - y1});
+  const double fx = std::max(std::abs(x0 - cx), std::abs(x1 - cx)), fy = std::max(std::abs(y0 - cy), std::abs(y1 - cy));
+  const double far = curvature_drop(std::hypot(fx, fy), r.curve.radius_m);
+  const double near = curvature_drop(std::hypot(nx, ny), r.curve.radius_m);
+  lo -= far + 1e-9 * (1.0 + far);
+  hi -= near - 1e-9 * (1.0 + near);
+}
 
 // Rejects NaN/inf/zero input; normalises dir.
 bool make_ray(glm::dvec3 origin, glm::dvec3 dir, double max_t, double scene_scale, Ray& r) {
@@ -127,10 +152,10 @@ inline bool intersect_cell(const Heightfield& hf, const Ray& r, int i, int j, do
   const double y0 = double(j) * hf.spacing_y_m, y1 = double(j + 1) * hf.spacing_y_m;
   const float* row0 = hf.heights.data() + static_cast<std::size_t>(j) * hf.width + i;
   const float* row1 = row0 + hf.width;
-  const RVtx p00 = to_ray_space(r, x0, y0, row0[0]);
-  const RVtx p10 = to_ray_space(r, x1, y0, row0[1]);
-  const RVtx p01 = to_ray_space(r, x0, y1, row1[0]);
-  const RVtx p11 = to_ray_space(r, x1, y1, row1[1]);
+  const RVtx p00 = to_ray_space(r, x0, y0, drawn_height(r, x0, y0, row0[0]));
+  const RVtx p10 = to_ray_space(r, x1, y0, drawn_height(r, x1, y0, row0[1]));
+  const RVtx p01 = to_ray_space(r, x0, y1, drawn_height(r, x0, y1, row1[0]));
+  const RVtx p11 = to_ray_space(r, x1, y1, drawn_height(r, x1, y1, row1[1]));
   // Canonical edge directions: west->east, south->north, and the diagonal
   // (i,j)->(i+1,j+1). The east edge here is the west edge of cell i+1 and the
   // north edge is the south edge of cell j+1, computed identically there.
@@ -229,7 +254,9 @@ bool origin_on_cell_surface(const Heightfield& hf, const Ray& r, int i, int j) {
   constexpr double kTol = 1e-12;
   if (fx < -kTol || fx > 1 + kTol || fy < -kTol || fy > 1 + kTol) return false;
   const double u = std::clamp(fx, 0.0, 1.0), v = std::clamp(fy, 0.0, 1.0);
-  const double h00 = hf.at(i, j), h10 = hf.at(i + 1, j), h01 = hf.at(i, j + 1), h11 = hf.at(i + 1, j + 1);
+  const double x0 = double(i) * sx, x1 = double(i + 1) * sx, y0 = double(j) * sy, y1 = double(j + 1) * sy;
+  const double h00 = drawn_height(r, x0, y0, hf.at(i, j)), h10 = drawn_height(r, x1, y0, hf.at(i + 1, j));
+  const double h01 = drawn_height(r, x0, y1, hf.at(i, j + 1)), h11 = drawn_height(r, x1, y1, hf.at(i + 1, j + 1));
   const double h = u >= v ? h00 + (h10 - h00) * u + (h11 - h10) * v : h00 + (h01 - h00) * v + (h11 - h01) * u;
   return std::abs(r.o.z - h) <= kSurfaceEpsM;
 }
@@ -244,6 +271,10 @@ std::optional<RayHit> origin_on_surface(const Heightfield& hf, const Ray& r) {
   return RayHit{0.0, r.o, i, j};
 }
 
+// The traversal, flat or curved (r.curve).
+std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& pyr, glm::dvec3 origin,
+                                    glm::dvec3 dir, double max_t, const Curvature& curvature, RayCastStats& stats);
+
 }  // namespace
 
 std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, glm::dvec3 origin,
@@ -254,6 +285,19 @@ std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, 
 
 std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, glm::dvec3 origin,
                                glm::dvec3 dir, double max_t, RayCastStats& stats) {
+  return cast_ray_impl(hf, pyr, origin, dir, max_t, Curvature{}, stats);
+}
+
+std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, glm::dvec3 origin,
+                               glm::dvec3 dir, double max_t, const Curvature& curvature) {
+  RayCastStats unused;
+  return cast_ray_impl(hf, pyr, origin, dir, max_t, curvature, unused);
+}
+
+namespace {
+
+std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& pyr, glm::dvec3 origin,
+                                    glm::dvec3 dir, double max_t, const Curvature& curvature, RayCastStats& stats) {
   stats = RayCastStats{};
   if (hf.width < 2 || hf.height < 2 || !valid_spacing(hf)) return std::nullopt;
   if (pyr.empty() || pyr.cells_x() != hf.width - 1 || pyr.cells_y() != hf.height - 1 ||
@@ -262,6 +306,9 @@ std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, 
   const HeightPyramid::MinMax root = pyr.root();
   Ray r;
   if (!make_ray(origin, dir, max_t, scene_scale(hf, root.lo, root.hi), r)) return std::nullopt;
+  if (curvature.radius_m > 0.0 && std::isfinite(curvature.radius_m) && std::isfinite(curvature.centre_x) &&
+      std::isfinite(curvature.centre_y))
+    r.curve = curvature;
 
   const double sx = hf.spacing_x_m, sy = hf.spacing_y_m;
   const std::int64_t ncx = pyr.cells_x(), ncy = pyr.cells_y();
@@ -305,7 +352,9 @@ std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, 
   {
     double t2d, key;
     ++stats.nodes_tested;
-    if (!box_test(r, 0.0, double(ncx) * sx, 0.0, double(ncy) * sy, root.lo, root.hi, best, t2d, key))
+    double lo = root.lo, hi = root.hi;
+    drawn_range(r, 0.0, double(ncx) * sx, 0.0, double(ncy) * sy, lo, hi);
+    if (!box_test(r, 0.0, double(ncx) * sx, 0.0, double(ncy) * sy, lo, hi, best, t2d, key))
       return std::nullopt;
     stack[sp++] = Entry{key, pyr.num_levels() - 1, 0, 0};
   }
@@ -357,7 +406,9 @@ std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, 
         const double t2d = enter;
         ++stats.nodes_tested;
         const HeightPyramid::MinMax mm = pyr.node(cl, ci0 + di, cj0 + dj);
-        if (!slab(r, 2, mm.lo, mm.hi, enter, exit) || !overlaps(r, enter, exit)) continue;
+        double lo = mm.lo, hi = mm.hi;
+        drawn_range(r, xs[di], xs[di + 1], ys[dj], ys[dj + 1], lo, hi);
+        if (!slab(r, 2, lo, hi, enter, exit) || !overlaps(r, enter, exit)) continue;
         kids[n++] = Child{t2d, enter - slack(r, enter), ci0 + di, cj0 + dj};
       }
     }
@@ -382,6 +433,8 @@ std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyr, 
   if (!found) return std::nullopt;
   return make_hit(r, best, hit_i, hit_j);
 }
+
+}  // namespace
 
 std::optional<RayHit> cast_ray_dda(const Heightfield& hf, glm::dvec3 origin, glm::dvec3 dir, double max_t) {
   if (hf.width < 2 || hf.height < 2 || !valid_spacing(hf)) return std::nullopt;

@@ -61,6 +61,19 @@ std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyram
                                glm::dvec3 origin, glm::dvec3 dir,
                                double max_t = std::numeric_limits<double>::infinity());
 
+// The terrain as the renderer draws it for an eye at `centre` (x, y) with
+// Earth curvature (terrain/earth_curvature.h): every sample (i, j) lowered by
+// curvature_drop(distance from centre to the sample, radius_m), the triangles
+// linear between the lowered samples. The ray is straight in that (the
+// centre's tangent) frame; hit points are in it too (z lowered). radius_m
+// <= 0: the flat surface (the same as the overloads without it).
+struct Curvature {
+  double centre_x = 0.0, centre_y = 0.0;
+  double radius_m = 0.0;
+};
+std::optional<RayHit> cast_ray(const Heightfield& hf, const HeightPyramid& pyramid, glm::dvec3 origin,
+                               glm::dvec3 dir, double max_t, const Curvature& curvature);
+
 // Work done by one cast_ray, for tests and benchmarks.
 struct RayCastStats {
   int nodes_tested = 0;  // pyramid nodes whose min/max box was tested against the ray

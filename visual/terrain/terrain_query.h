@@ -9,15 +9,13 @@
 // are the DEM's (metres above its vertical datum); a HAT is alt - HOT.
 //
 // Earth curvature (terrain/earth_curvature.h): with a radius R > 0 the
-// renderer lowers the terrain by drop(d) below the eye's tangent plane. A
-// line of sight is answered in the same model seen from its source point: the
-// line is straight in the source's tangent frame, the terrain drops by
-// drop(horizontal distance from the source). In the flat DEM frame that line
-// bends upwards by drop(d); it is followed in straight chords whose sag is at
-// most `chord_tolerance_m` (a chord lies above the bent line, so the answer
-// can miss a graze closer than that, never report a hit the line does not
-// have). HOT needs no curvature: a point's height is the DEM's wherever the
-// eye is.
+// renderer lowers every sample by drop(d) below the eye's tangent plane, d its
+// horizontal distance from the eye. A line of sight is answered as drawn for
+// an eye at its source point: the line is straight in the source's tangent
+// frame and meets the triangles between the lowered samples
+// (terrain/ray_cast.h, Curvature). Hit points are given back in the flat DEM
+// frame (the same x, y; z the DEM's height there). HOT needs no curvature: a
+// point's height is the DEM's wherever the eye is.
 
 #include <optional>
 
@@ -71,16 +69,12 @@ class TerrainQuery {
 
   const Heightfield& heightfield() const { return hf_; }
   double earth_radius_m() const { return earth_radius_m_; }
-  // The largest sag of a chord below the bent line of sight (curvature only).
-  double chord_tolerance_m() const { return chord_tolerance_m_; }
-  void set_chord_tolerance_m(double t) { chord_tolerance_m_ = t; }
   bool inside(double x_m, double y_m) const;
 
  private:
   const Heightfield& hf_;
   HeightPyramid pyramid_;
   double earth_radius_m_ = 0.0;
-  double chord_tolerance_m_ = 0.01;
 };
 
 }  // namespace ig::terrain
