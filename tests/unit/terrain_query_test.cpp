@@ -19,6 +19,8 @@
 #include <glm/geometric.hpp>
 
 #include "io/filter/geodesy.h"
+#include "lod/level0_height_query.h"
+#include "lod/roam_level0_mesh.h"
 #include "terrain/dem_loader.h"
 #include "terrain/earth_curvature.h"
 #include "terrain/terrain_query.h"
@@ -113,6 +115,38 @@ TEST(TerrainQuerySierra, HotAtRandomGeodeticPointsMatchesTheDemTriangles) {
   // Outside the footprint: no answer.
   const glm::dvec2 out = grid->to_local(lat1 + 0.01, lon0);
   EXPECT_FALSE(q.surface_at(out.x, out.y));
+}
+
+// Where the two-level method draws Level0 (outside Level1), the picture is a
+// coarse ROAM mesh, not the full-resolution surface the queries answer from:
+// how far apart they are on the Sierra DEM (docs/host-services.md). Level0's
+// vertices are DEM samples, so there they agree.
+TEST(TerrainQuerySierra, Level0DiffersFromTheFullResolutionSurface) {
+  if (!dem_dir()) GTEST_SKIP() << "IG_DEM_DIR not set: real-DEM tests skipped";
+  const Heightfield& hf = sierra();
+  const TerrainQuery q(hf, 0.0);
+  for (int budget : {2048, 8192, 32768}) {
+    const auto mesh = ig::lod::build_level0_mesh(hf, ig::lod::Level0Options{budget, 0.0, ig::terrain::kEarthRadiusM});
+    const ig::lod::Level0HeightQuery level0(mesh, hf.width, hf.height);
+    std::mt19937 rng(budget);
+    std::uniform_real_distribution<double> ui(0, hf.width - 1), uj(0, hf.height - 1);
+    std::vector<double> diff;
+    for (int k = 0; k < 100000; ++k) {
+      const double i = ui(rng), j = uj(rng);
+      diff.push_back(std::abs(level0.height_at(i, j) - q.surface_at(i * hf.spacing_x_m, j * hf.spacing_y_m)->height_m));
+    }
+    std::sort(diff.begin(), diff.end());
+    double mean = 0;
+    for (double d : diff) mean += d / double(diff.size());
+    std::printf("Level0 %d triangles vs full resolution, 100000 random points: mean %.1f m, median %.1f m, "
+                "p95 %.1f m, max %.1f m\n",
+                mesh.triangle_count, mean, diff[diff.size() / 2], diff[diff.size() * 95 / 100], diff.back());
+    EXPECT_GT(diff.back(), 1.0);  // coarse enough to matter for ground contact
+    double at_vertices = 0;
+    for (const glm::ivec2 s : mesh.samples)
+      at_vertices = std::max(at_vertices, std::abs(level0.height_at(s.x, s.y) - hf.at(s.x, s.y)));
+    EXPECT_LT(at_vertices, 1e-3);
+  }
 }
 
 // ------------------------------------------------------------ line of sight
