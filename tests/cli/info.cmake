@@ -117,7 +117,8 @@ ig_info_test(spacing_override "${D}/tiny.asc|--spacing|2.5" 0
 ig_info_test(help "--help" 0 OUT "usage: ig info FILE")
 ig_info_test(missing_file "${D}/missing.tif" 1 ERR "missing\\.tif: no such file")
 ig_info_test(empty_file "${D}/empty.tif" 1 ERR "empty\\.tif: empty file \\(0 bytes\\)")
-ig_info_test(directory "${D}" 1 ERR "info-data: is a directory")
+# A folder is a mosaic of its tiles (cli.tiles.*): here the first tile that cannot be read is named.
+ig_info_test(directory_of_bad_tiles "${D}" 1 ERR "info-data/N44W072\\.hgt: tile cannot be read")
 ig_info_test(text_as_tif "${D}/notes.tif" 1 ERR "notes\\.tif: not a recognised raster format")
 ig_info_test(text_as_png "${D}/notes.png" 1 ERR "notes\\.png: not a recognised raster format")
 ig_info_test(truncated_hgt "${D}/N44W072.hgt" 1

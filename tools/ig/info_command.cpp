@@ -21,11 +21,12 @@ namespace ig::app {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: ig info FILE [--encoding auto|terrain-rgb|png16|gdal] [--scale S] [--offset O]\n"
+    "usage: ig info FILE|FOLDER [--encoding auto|terrain-rgb|png16|gdal] [--scale S] [--offset O]\n"
     "                    [--spacing M]\n"
     "Loads a DEM (GeoTIFF, SRTM .hgt, USGS DEM, ESRI ASCII grid, any single-band GDAL\n"
-    "raster, 16-bit PNG or terrain-RGB PNG) and prints one JSON object: size, spacing\n"
-    "in metres, min/max/mean height, filled nodata samples, CRS and corner coordinates.\n"
+    "raster or VRT, 16-bit PNG or terrain-RGB PNG; a FOLDER is a mosaic of the DEM tiles\n"
+    "in it) and prints one JSON object: size, spacing in metres, min/max/mean height,\n"
+    "filled nodata samples, CRS, corner coordinates, and for a folder the tile counts.\n"
     "  --encoding E  how to decode: auto (default; PNGs by their layout, else GDAL),\n"
     "                png16 (metres = value * scale + offset), terrain-rgb\n"
     "                (metres = -10000 + (R*65536 + G*256 + B) * 0.1), gdal\n"

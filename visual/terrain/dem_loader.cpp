@@ -1,4 +1,5 @@
 #include "terrain/dem_loader.h"
+#include "terrain/dem_mosaic.h"
 
 #include <gdal.h>
 #include <cpl_conv.h>
@@ -514,8 +515,20 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
   if (path.empty() || st.type() == fs::file_type::not_found)
     throw DemError(path, "no such file");
   if (ec) throw DemError(path, "cannot access: " + ec.message());
-  if (st.type() == fs::file_type::directory)
-    throw DemError(path, "is a directory, not a DEM file");
+  if (st.type() == fs::file_type::directory) {
+    if (enc != "auto" && enc != "gdal") throw DemError(path, "a folder of tiles is read through GDAL, not as " + enc);
+    const DemMosaic mosaic(path);
+    Heightfield hf;
+    try {
+      hf = load_with_gdal(mosaic.vrt_path(), opts, false);
+    } catch (const DemError& e) {
+      throw DemError(path, "mosaic of " + std::to_string(mosaic.tile_count()) + " tiles: " + e.reason());
+    }
+    hf.source = path;
+    hf.source_tiles = mosaic.tile_count();
+    hf.reprojected_tiles = mosaic.reprojected_count();
+    return hf;
+  }
   if (st.type() != fs::file_type::regular)
     throw DemError(path, "not a regular file");
   const std::uintmax_t bytes = fs::file_size(path, ec);
@@ -576,6 +589,12 @@ std::string dem_info_json(const Heightfield& hf) {
   o += (hf.georef && hf.georef->geographic) ? "true" : "false";
   key("source");
   json_string(o, hf.source);
+  if (hf.source_tiles > 0) {
+    key("tiles");
+    o += std::to_string(hf.source_tiles);
+    key("reprojected_tiles");
+    o += std::to_string(hf.reprojected_tiles);
+  }
   if (hf.georef) {
     const auto& g = hf.georef->grid_to_crs;
     auto at = [&g](double i, double j) {

@@ -49,6 +49,7 @@ struct DemLoadOptions {
 };
 
 // Loads a DEM; throws DemError on any failure (message "<path>: <reason>").
+// A folder is read as a mosaic of the DEM tiles in it (terrain/dem_mosaic.h).
 //
 // Nodata: a sample is void when it equals the band's nodata value, is NaN or
 // +-Inf, or is -32768 (the SRTM void marker; no real elevation is that low).
@@ -62,7 +63,8 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts = {});
 // height, spacing_x_m, spacing_y_m, min_m, max_m, mean_m, nodata_count, crs
 // (short name or null), geographic, source, and for georeferenced grids
 // "corners" ({"sw","se","nw","ne"}: [x, y] CRS coordinates of the corner
-// sample centres) and "bounds" (outer pixel edges: west, south, east, north).
+// sample centres) and "bounds" (outer pixel edges: west, south, east, north);
+// for a folder of tiles also "tiles" and "reprojected_tiles".
 std::string dem_info_json(const Heightfield& hf);
 
 // Metres per unit of latitude / longitude at geodetic latitude lat_deg on an

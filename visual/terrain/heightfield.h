@@ -38,7 +38,9 @@ struct Heightfield {
   std::int64_t nodata_count = 0;  // samples that were nodata in the file and got filled
 
   std::optional<GeoReference> georef;
-  std::string source;  // file path or generator description, for logs
+  std::string source;  // file path, folder of tiles or generator description, for logs
+  int source_tiles = 0;       // > 0: mosaicked from this many tiles (terrain/dem_mosaic.h)
+  int reprojected_tiles = 0;  // of which reprojected to the first tile's CRS
 
   float at(int i, int j) const { return heights[static_cast<std::size_t>(j) * width + i]; }
   float& at(int i, int j) { return heights[static_cast<std::size_t>(j) * width + i]; }
