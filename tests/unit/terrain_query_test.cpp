@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include <gdal_priv.h>
@@ -355,6 +356,15 @@ TEST(TerrainQueryLos, SegmentsAndMisses) {
   if (past) {
     EXPECT_GT(past->range_m, down->range_m + 1.0);
   }
+  // A shared pyramid answers the same; one from another grid is refused.
+  const ig::terrain::HeightPyramid pyramid(hf);
+  const TerrainQuery shared(hf, pyramid, 0.0);
+  EXPECT_EQ(shared.segment(high, low)->range_m, down->range_m);
+  const Heightfield small = rough_hf(1);
+  Heightfield smaller = small;
+  smaller.width = smaller.height = 9;
+  smaller.heights.resize(81);
+  EXPECT_THROW(TerrainQuery(smaller, pyramid, 0.0), std::invalid_argument);
   // Bad input.
   EXPECT_FALSE(q.ray(high, dvec3(0), 0, 10));
   EXPECT_FALSE(q.ray(high, dvec3(1, 0, 0), 10, 5));

@@ -44,8 +44,9 @@ BodyAxes body_axes(const io::Pose& p) {
 }  // namespace
 
 HostServices::HostServices(const terrain::Heightfield& hf, double earth_radius_m, io::GeodeticToLocal to_local,
-                           LocalToGeodetic to_geodetic, HostServicesOptions options)
-    : query_(hf, earth_radius_m),
+                           LocalToGeodetic to_geodetic, HostServicesOptions options,
+                           const terrain::HeightPyramid* pyramid)
+    : query_(pyramid ? terrain::TerrainQuery(hf, *pyramid, earth_radius_m) : terrain::TerrainQuery(hf, earth_radius_m)),
       to_local_(std::move(to_local)),
       to_geodetic_(std::move(to_geodetic)),
       options_(options) {}

@@ -46,8 +46,10 @@ using LocalToGeodetic = std::function<std::optional<glm::dvec3>(const glm::dvec3
 
 class HostServices {
  public:
+  // pyramid: the scene's min/max pyramid of hf to share (nullptr: build one).
   HostServices(const terrain::Heightfield& hf, double earth_radius_m, io::GeodeticToLocal to_local,
-               LocalToGeodetic to_geodetic, HostServicesOptions options = {});
+               LocalToGeodetic to_geodetic, HostServicesOptions options = {},
+               const terrain::HeightPyramid* pyramid = nullptr);
 
   // Every datagram from the CIGI host: its requests are queued.
   void take(std::span<const std::uint8_t> datagram);

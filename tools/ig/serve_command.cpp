@@ -197,12 +197,14 @@ int run_serve_command(const std::vector<std::string>& argv) {
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
                    "packets (CIGI, FlightGear, native geodetic) are counted as rejected\n";
     const io::Pose initial = runner.pose_at(0.0);
-    // CIGI host services answer on the reply port, from the terrain as drawn.
+    // CIGI host services answer on the reply port, from the terrain as drawn
+    // (sharing the scene's min/max pyramid).
     std::unique_ptr<HostServices> services;
     if (cigi_reply)
       services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
                                                 geodetic_placer(runner.heightfield()),
-                                                local_to_geodetic(runner.heightfield()));
+                                                local_to_geodetic(runner.heightfield()), HostServicesOptions{},
+                                                &runner.scene().height_pyramid());
 #ifdef IG_WITH_MODBUS
     std::unique_ptr<ModbusLink> modbus;
     if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, latency, args.quiet);

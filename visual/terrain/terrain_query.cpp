@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -34,7 +35,16 @@ SurfacePoint surface_in_cell(const Heightfield& hf, int i, int j, double fx, dou
 }  // namespace
 
 TerrainQuery::TerrainQuery(const Heightfield& hf, double earth_radius_m)
-    : hf_(hf), pyramid_(hf), earth_radius_m_(earth_radius_m > 0.0 ? earth_radius_m : 0.0) {}
+    : hf_(hf),
+      owned_pyramid_(std::make_unique<HeightPyramid>(hf)),
+      pyramid_(*owned_pyramid_),
+      earth_radius_m_(earth_radius_m > 0.0 ? earth_radius_m : 0.0) {}
+
+TerrainQuery::TerrainQuery(const Heightfield& hf, const HeightPyramid& pyramid, double earth_radius_m)
+    : hf_(hf), pyramid_(pyramid), earth_radius_m_(earth_radius_m > 0.0 ? earth_radius_m : 0.0) {
+  if (pyramid.cells_x() != std::max(hf.width - 1, 0) || pyramid.cells_y() != std::max(hf.height - 1, 0))
+    throw std::invalid_argument("TerrainQuery: the pyramid was not built from this heightfield");
+}
 
 bool TerrainQuery::inside(double x_m, double y_m) const {
   return hf_.width >= 2 && hf_.height >= 2 && x_m >= 0.0 && y_m >= 0.0 && x_m <= hf_.extent_x_m() &&

@@ -17,6 +17,7 @@
 // frame (the same x, y; z the DEM's height there). HOT needs no curvature: a
 // point's height is the DEM's wherever the eye is.
 
+#include <memory>
 #include <optional>
 
 #include <glm/vec3.hpp>
@@ -43,6 +44,9 @@ class TerrainQuery {
   // Builds the min/max pyramid (about 0.2 s and 180 MB for 4097 x 4097).
   // hf must outlive the query and not change. earth_radius_m <= 0: flat.
   TerrainQuery(const Heightfield& hf, double earth_radius_m);
+  // Uses a pyramid built from hf already (the scene's), which must outlive
+  // the query. Throws std::invalid_argument when its size does not match.
+  TerrainQuery(const Heightfield& hf, const HeightPyramid& pyramid, double earth_radius_m);
 
   // The drawn surface at (x, y); nullopt outside the DEM footprint
   // [0, extent_x] x [0, extent_y] or for non-finite input. On a cell's
@@ -73,7 +77,8 @@ class TerrainQuery {
 
  private:
   const Heightfield& hf_;
-  HeightPyramid pyramid_;
+  std::unique_ptr<HeightPyramid> owned_pyramid_;
+  const HeightPyramid& pyramid_;
   double earth_radius_m_ = 0.0;
 };
 
