@@ -184,6 +184,11 @@ UdpSender::~UdpSender() {
 
 bool UdpSender::send(std::span<const std::uint8_t> d) { return send_to(d, destination_); }
 
+bool UdpReceiver::send_to(std::span<const std::uint8_t> d, const sockaddr_in& to) {
+  return sendto(fd_, d.data(), d.size(), MSG_DONTWAIT, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
+         ssize_t(d.size());
+}
+
 bool UdpSender::send_to(std::span<const std::uint8_t> d, const sockaddr_in& to) {
   return sendto(fd_, d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
          ssize_t(d.size());

@@ -56,6 +56,9 @@ class UdpReceiver {
   const ReceiveStats& stats() const { return stats_; }
   std::uint16_t port() const;  // the bound port (useful with port 0)
   int fd() const { return fd_; }
+  // A reply from the bound port to `to` (a datagram's sender). false when
+  // the kernel refused; never blocks for long, never throws.
+  bool send_to(std::span<const std::uint8_t> datagram, const sockaddr_in& to);
 
  private:
   int fd_ = -1;

@@ -9,7 +9,12 @@
 // outside the terrain invalid, a periodic request answered every 2nd frame
 // until cancelled. Prints PASS or FAIL lines.
 //
-//   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES [--bench HOT LOS [SPREAD_M]]
+//   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES [--native IG_UDP_ADDR:PORT]
+//   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES --bench HOT LOS [SPREAD_M]
+//
+// --native: each frame also sends native height / line-of-sight queries
+// ("IGQR") to the IG's native port from its own socket, and checks the
+// answers that came back before the frame's Start Of Frame.
 //
 // --bench: no checks; HOT HAT/HOT and LOS requests (half segments, half
 // vectors, 5-20 km) every frame at most 60 frames a second, and the time
@@ -20,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 #include <string>
@@ -34,6 +40,7 @@
 #include "io/pose.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
+#include "io/wire/native_query.h"
 #include "terrain/dem_loader.h"
 #include "terrain/earth_curvature.h"
 
@@ -59,7 +66,8 @@ struct Expect {
 
 int main(int argc, char** argv) {
   const bool bench = (argc == 8 || argc == 9) && std::string(argv[5]) == "--bench";
-  if (argc != 5 && !bench) {
+  const bool native = argc == 7 && std::string(argv[5]) == "--native";
+  if (argc != 5 && !bench && !native) {
     std::fprintf(stderr, "usage: cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES [--bench HOT LOS [SPREAD_M]]\n");
     return 2;
   }
@@ -68,6 +76,15 @@ int main(int argc, char** argv) {
   ig::io::net::UdpSender to_ig(argv[2]);
   ig::io::net::UdpReceiver replies(argv[3]);
   const int frames = std::stoi(argv[4]);
+  // Native queries go out from this socket; answers come back to it.
+  std::unique_ptr<ig::io::net::UdpReceiver> native_socket;
+  sockaddr_in native_ig{};
+  if (native) {
+    native_socket = std::make_unique<ig::io::net::UdpReceiver>("127.0.0.1:0");
+    native_ig = ig::io::net::parse_endpoint(argv[6]);
+  }
+  std::size_t native_checked = 0;
+  double native_worst = 0.0;
   const double R = ig::terrain::kEarthRadiusM;  // the Sierra scenario draws with curvature ("auto")
   auto local = [&](const dvec3& g) { return grid->to_local({g.x, g.y, g.z}); };
   auto geodetic = [&](const dvec3& l) {
@@ -258,6 +275,29 @@ int main(int argc, char** argv) {
       r.point = geodetic(own.position);
       add(encode_cigi_hat_hot_request(r, swap));
     }
+    // Native queries first: the IG reads its other sources after the frame's
+    // CIGI datagram and answers them at once, before the Start Of Frame.
+    std::map<std::uint32_t, dvec3> native_expect;  // id -> local point (height) or source (vertical LOS)
+    if (native) {
+      for (std::uint32_t n = 0; n < 20; ++n) {
+        NativeQuery q;
+        q.id = std::uint32_t(k) * 100 + n;
+        const dvec3 l(ux(rng), uy(rng), 0.0);
+        if (n % 4 == 3) {  // straight down in local metres: range = height above the surface
+          q.kind = NativeQueryKind::LosVector;
+          q.a = dvec3(l.x, l.y, hf.sample_surface(l.x, l.y) + 321.0);
+          q.b = dvec3(0, 0, -1);
+          q.max_range_m = 1e4;
+          native_expect[q.id] = q.a;
+        } else {
+          q.kind = NativeQueryKind::Height;
+          q.geodetic = true;
+          q.a = geodetic(dvec3(l.x, l.y, 2500.0));
+          native_expect[q.id] = local(q.a);
+        }
+        native_socket->send_to(encode_native_query(q), native_ig);
+      }
+    }
     to_ig.send(d);
 
     // This frame's answers: the datagram whose Start Of Frame echoes host frame k.
@@ -270,6 +310,28 @@ int main(int argc, char** argv) {
       if (!r) fail("frame " + std::to_string(k) + ": undecodable responses");
       if (r) got = *r;
       break;
+    }
+    if (native) {
+      std::size_t got_native = 0;
+      native_socket->poll(
+          [&](std::span<const std::uint8_t> dg, double, const sockaddr_in&) {
+            const auto a = decode_native_answer(dg);
+            if (!a || !native_expect.count(a->id) || !a->valid) {
+              fail("native answer undecodable, unknown or invalid");
+              return;
+            }
+            ++got_native;
+            const dvec3 p = native_expect.at(a->id);
+            const double hot = hf.sample_surface(p.x, p.y);
+            const double err = a->kind == NativeQueryKind::Height ? std::abs(a->hot_or_range_m - hot)
+                                                                  : std::abs(a->hot_or_range_m - (p.z - hot));
+            native_worst = std::max(native_worst, err);
+            ++native_checked;
+          },
+          1000);
+      if (got_native != native_expect.size())
+        fail("frame " + std::to_string(k) + ": " + std::to_string(got_native) + " of " +
+             std::to_string(native_expect.size()) + " native answers before the Start Of Frame");
     }
     std::set<std::uint16_t> answered;
     for (const CigiResponse& resp : got) {
@@ -355,6 +417,10 @@ int main(int argc, char** argv) {
   for (int f : periodic_frames) pf += std::to_string(f) + " ";
   std::printf("periodic request answered in frames: %s\n", pf.c_str());
   std::printf("byte orders sent: %zu\n", orders_seen.size());
+  if (native) {
+    std::printf("native queries answered: %zu, max error %.3g m\n", native_checked, native_worst);
+    if (native_checked == 0 || native_worst >= 0.01) fail("native answers");
+  }
   if (hot_worst >= 0.01) fail("HOT error");
   if (los_surface_worst >= 0.01 || los_line_worst >= 0.002) fail("LOS hit geometry");
   if (frames >= 9 && periodic_frames != std::set<int>{1, 3, 5, 7}) fail("periodic answers not every 2nd frame until cancelled");

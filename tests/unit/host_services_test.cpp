@@ -11,6 +11,7 @@
 #include "ig/host_services.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
+#include "io/wire/native_query.h"
 #include "ig/scene_setup.h"
 #include "terrain/georef.h"
 
@@ -206,6 +207,49 @@ TEST(HostServices, BudgetDefersTheRestToLaterFrames) {
   const auto back = decode_cigi_responses(d);
   ASSERT_TRUE(back);
   EXPECT_EQ(back->size(), 1u);
+}
+
+TEST(HostServices, NativeQueriesAnsweredAtOnceWithinTheBudget) {
+  HostServicesOptions o;
+  o.max_hat_hot_per_frame = 3;
+  Fixture f(o);
+  const ig::io::Pose own = level_pose({500, 600, 900}, 0);
+  NativeQuery q;
+  q.kind = NativeQueryKind::Height;
+  q.geodetic = true;
+  q.id = 42;
+  q.a = f.geodetic(333.0, 444.0, 1000.0);
+  const auto a = f.services.answer_native(encode_native_query(q));
+  ASSERT_TRUE(a);
+  const auto h = decode_native_answer(*a);
+  ASSERT_TRUE(h && h->valid);
+  EXPECT_EQ(h->id, 42u);
+  EXPECT_NEAR(h->hot_or_range_m, f.hf.sample_surface(333.0, 444.0), 1e-6);
+  EXPECT_NEAR(h->hat_m, 1000.0 - h->hot_or_range_m, 1e-6);
+  EXPECT_NEAR(h->point.x, q.a.x, 1e-9);  // latitude back
+  // Local frame, straight down: the range is the height above the surface.
+  NativeQuery v;
+  v.kind = NativeQueryKind::LosVector;
+  v.a = {700, 800, 2000};
+  v.b = {0, 0, -5};
+  v.max_range_m = INFINITY;
+  const auto l = decode_native_answer(*f.services.answer_native(encode_native_query(v)));
+  ASSERT_TRUE(l && l->valid && l->hit);
+  EXPECT_NEAR(l->hot_or_range_m, 2000.0 - f.hf.sample_surface(700, 800), 1e-9);
+  // Three HAT/HOT per frame: the fourth is refused until the frame ends.
+  EXPECT_TRUE(f.services.answer_native(encode_native_query(q)));
+  EXPECT_TRUE(f.services.answer_native(encode_native_query(q)));
+  EXPECT_FALSE(f.services.answer_native(encode_native_query(q)));
+  EXPECT_EQ(f.services.counters().dropped.at("native-over-budget"), 1u);
+  f.services.answer_frame(own);
+  EXPECT_TRUE(f.services.answer_native(encode_native_query(q)));
+  // Outside: valid clear; malformed: counted, no answer.
+  q.a = f.geodetic(-100.0, 10.0, 0.0);
+  EXPECT_FALSE(decode_native_answer(*f.services.answer_native(encode_native_query(q)))->valid);
+  auto bad = encode_native_query(q);
+  bad[30] ^= 1;
+  EXPECT_FALSE(f.services.answer_native(bad));
+  EXPECT_EQ(f.services.counters().dropped.at("native-bad-crc"), 1u);
 }
 
 TEST(HostServices, MalformedRequestsCountedByReason) {

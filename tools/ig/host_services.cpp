@@ -113,6 +113,7 @@ std::vector<CigiResponse> HostServices::answer_frame(const io::Pose& ownship) {
     queue_.pop_front();
   }
   ++frame_;
+  native_hat_hot_ = native_los_ = 0;
   last_frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!out.empty()) {
     ++frames_with_work_;
@@ -142,6 +143,77 @@ CigiResponse HostServices::answer(const CigiRequest& request, const io::Pose& ow
   const bool valid = std::visit([](const auto& a) { return a.valid; }, r);
   if (!valid) ++counters_.invalid;
   return r;
+}
+
+std::optional<std::array<std::uint8_t, kNativeQuerySize>> HostServices::answer_native(
+    std::span<const std::uint8_t> datagram) {
+  const NativeQueryResult r = decode_native_query(datagram);
+  if (!r.query) {
+    drop(std::string("native-") + native_query_reject_name(*r.reject));
+    return std::nullopt;
+  }
+  ++counters_.requests;
+  const bool los = r.query->kind != NativeQueryKind::Height;
+  std::size_t& spent = los ? native_los_ : native_hat_hot_;
+  if (spent >= (los ? options_.max_los_per_frame : options_.max_hat_hot_per_frame)) {
+    drop("native-over-budget");  // no queue for native queries: the host asks again
+    return std::nullopt;
+  }
+  ++spent;
+  ++counters_.answered;
+  ++counters_.native_answered;
+  const NativeAnswer a = answer(*r.query);
+  if (!a.valid) ++counters_.invalid;
+  return encode_native_answer(a);
+}
+
+NativeAnswer HostServices::answer(const NativeQuery& q) {
+  NativeAnswer out;
+  out.kind = q.kind;
+  out.geodetic = q.geodetic;
+  out.id = q.id;
+  out.ig_frame = std::uint32_t(frame_);
+  auto to_local = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+    if (!q.geodetic) return p;
+    return to_local_ ? to_local_(p.x, p.y, p.z) : std::nullopt;
+  };
+  auto back = [&](const glm::dvec3& p) -> std::optional<glm::dvec3> {
+    if (!q.geodetic) return p;
+    return to_geodetic_ ? to_geodetic_(p) : std::nullopt;
+  };
+  const auto a = to_local(q.a);
+  if (!a || !query_.inside(a->x, a->y)) return out;
+  if (q.kind == NativeQueryKind::Height) {
+    const auto s = query_.surface_at(a->x, a->y);
+    const auto p = back(glm::dvec3(a->x, a->y, s->height_m));
+    if (!p) return out;
+    out.valid = true;
+    out.hot_or_range_m = s->height_m;
+    out.hat_m = a->z - s->height_m;
+    out.point = *p;
+    out.normal = s->normal;
+    return out;
+  }
+  std::optional<terrain::LosHit> hit;
+  if (q.kind == NativeQueryKind::LosSegment) {
+    const auto b = to_local(q.b);
+    if (!b) return out;
+    hit = query_.segment(*a, *b);
+  } else {
+    hit = query_.ray(*a, q.b, q.min_range_m, q.max_range_m);
+  }
+  out.valid = true;
+  if (!hit) return out;
+  const auto p = back(hit->point);
+  if (!p) {
+    out.valid = false;
+    return out;
+  }
+  out.hit = true;
+  out.hot_or_range_m = hit->range_m;
+  out.point = *p;
+  out.normal = hit->normal;
+  return out;
 }
 
 std::optional<glm::dvec3> HostServices::place(const glm::dvec3& p, CigiCoords c, std::uint16_t entity,
@@ -228,6 +300,7 @@ nlohmann::json HostServices::summary() const {
           {"deferred", counters_.deferred},
           {"periodic_answers", counters_.periodic_answers},
           {"cancelled", counters_.cancelled},
+          {"native_answered", counters_.native_answered},
           {"dropped", counters_.dropped},
           {"pending", queue_.size()},
           {"periodic", periodic_.size()},

@@ -25,6 +25,7 @@
 #include "io/pose_intake.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
+#include "io/wire/native_query.h"
 #include "terrain/terrain_query.h"
 
 namespace ig::app {
@@ -63,6 +64,12 @@ class HostServices {
   std::vector<std::uint8_t> frame_datagram(const std::array<std::uint8_t, io::wire::kCigiStartOfFrameSize>& sof,
                                            const io::Pose& ownship);
 
+  // A native query ("IGQR", docs/protocol.md) answered at once, within the
+  // same per-frame budget (nullopt: malformed or over budget, counted).
+  std::optional<std::array<std::uint8_t, io::wire::kNativeQuerySize>> answer_native(
+      std::span<const std::uint8_t> datagram);
+  io::wire::NativeAnswer answer(const io::wire::NativeQuery& query);
+
   // One request answered now, outside the queue and the budget (library use).
   io::wire::CigiResponse answer(const io::wire::CigiRequest& request, const io::Pose& ownship);
 
@@ -73,6 +80,7 @@ class HostServices {
     std::uint64_t deferred = 0;     // answered in a later frame than received (budget)
     std::uint64_t periodic_answers = 0;
     std::uint64_t cancelled = 0;    // periodic requests ended by the host
+    std::uint64_t native_answered = 0;  // native queries answered
     std::map<std::string, std::uint64_t> dropped;  // reason -> count (malformed, refused)
   };
   const Counters& counters() const { return counters_; }
@@ -108,6 +116,7 @@ class HostServices {
   std::deque<Pending> queue_;
   std::map<std::pair<int, std::uint16_t>, Periodic> periodic_;  // (request kind, id)
   std::uint64_t frame_ = 0;
+  std::size_t native_hat_hot_ = 0, native_los_ = 0;  // answered natively this frame
   std::uint32_t host_frame_ = 0;
   Counters counters_;
   double last_frame_ms_ = 0.0, max_frame_ms_ = 0.0, sum_frame_ms_ = 0.0;

@@ -55,7 +55,8 @@ constexpr const char* kUsage =
     "  host IG Control, answered with Start Of Frame; needs --cigi). Default: the config's\n"
     "  live.latency (docs/pose-filter.md).\n"
     "  --cigi-reply: Start Of Frame every frame, with the answers to the host's HAT/HOT and\n"
-    "  line-of-sight requests (docs/host-services.md).\n"
+    "  line-of-sight requests (docs/host-services.md). Native height / line-of-sight queries\n"
+    "  on the --udp port are answered to their sender.\n"
     "  --can IFNAME: SocketCAN pose source, CANaerospace and the CAN FD pose (docs/can.md);\n"
     "  altitude from id 322 unless --can-altitude, any node unless --can-node, fields\n"
     "  older than --can-max-age-ms (100) are stale. A missing or down interface is retried.\n";
@@ -197,10 +198,11 @@ int run_serve_command(const std::vector<std::string>& argv) {
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
                    "packets (CIGI, FlightGear, native geodetic) are counted as rejected\n";
     const io::Pose initial = runner.pose_at(0.0);
-    // CIGI host services answer on the reply port, from the terrain as drawn
-    // (sharing the scene's min/max pyramid).
+    // Host services answer CIGI hosts on the reply port and native queries
+    // to their sender, from the terrain as drawn (sharing the scene's
+    // min/max pyramid).
     std::unique_ptr<HostServices> services;
-    if (cigi_reply)
+    if (cigi_reply || args.udp)
       services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
                                                 geodetic_placer(runner.heightfield()),
                                                 local_to_geodetic(runner.heightfield()), HostServicesOptions{},
@@ -239,7 +241,11 @@ int run_serve_command(const std::vector<std::string>& argv) {
     std::optional<std::array<std::uint8_t, io::wire::kCigiStartOfFrameSize>> last_sof;
     auto poll_source = [&](Source& src, std::size_t max_datagrams) {
       return src.socket->poll(
-          [&](std::span<const std::uint8_t> d, double t, const sockaddr_in&) {
+          [&](std::span<const std::uint8_t> d, double t, const sockaddr_in& from) {
+            if (services && src.protocol == io::Protocol::Native && io::wire::is_native_query(d)) {
+              if (const auto answer = services->answer_native(d)) src.socket->send_to(*answer, from);
+              return;
+            }
             if (recorder) recorder->write(src.protocol, d, t);
             feed.intake().handle(src.protocol, d, t);
             if (services && src.protocol == io::Protocol::Cigi) services->take(d);
@@ -340,6 +346,8 @@ int run_serve_command(const std::vector<std::string>& argv) {
             std::uint32_t(std::llround((frame_start - start) * 1e5)), io::wire::kCigiModeOperate, false);
         if (services) cigi_reply->send(services->frame_datagram(*last_sof, pose));
         else cigi_reply->send(*last_sof);
+      } else if (services) {
+        services->answer_frame(pose);  // the frame ends: a new native budget
       }
       outputs.frame(runner, f, capture, last, total, [&](std::vector<stats::Cell>& row) { feed.append_columns(row); });
 #ifdef IG_WITH_MODBUS
