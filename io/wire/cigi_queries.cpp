@@ -321,7 +321,7 @@ std::optional<std::vector<CigiResponse>> decode_cigi_responses(std::span<const s
     const std::uint8_t op = p[off], size = p[off + 1];
     const std::uint8_t* q = p + off;
     off += size;
-    const std::uint32_t frame = q[4] >> 4;
+    const std::uint32_t frame = size > 4 ? std::uint32_t(q[4] >> 4) : 0u;  // only read inside the packet
     if (op == kCigiOpHatHotResponse && size == kCigiHatHotResponseSize) {
       HatHotResponse h;
       h.id = bytes::load_u16(q + 2, o);

@@ -351,6 +351,18 @@ TEST(WireCigiQueries, ResponsesRoundTripBothOrders) {
   }
 }
 
+// Found by fuzz_cigi: a 2-byte packet at the end of an IG datagram was read
+// past its end (its byte 4). Under ASan this read is an error.
+TEST(WireCigiQueries, ShortPacketAtTheEndOfResponses) {
+  const auto sof = encode_cigi_start_of_frame(1, 2, 3, kCigiModeOperate, false);
+  std::vector<std::uint8_t> heap(sof.begin(), sof.end());
+  heap.push_back(77);
+  heap.push_back(2);
+  const auto r = decode_cigi_responses(std::span<const std::uint8_t>(heap.data(), heap.size()));
+  ASSERT_TRUE(r);
+  EXPECT_TRUE(r->empty());
+}
+
 TEST(WireCigiQueriesRandomized, MutatedDatagramsGiveOnlySaneRequests) {
   std::mt19937_64 rng(26);
   HatHotRequest h;
