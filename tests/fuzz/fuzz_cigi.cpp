@@ -9,6 +9,7 @@
 #include "fuzz_check.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
+#include "io/wire/cigi_views.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace ig::io::wire;
@@ -38,5 +39,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   (void)decode_cigi_responses(in);
+  // View packets: enabled angles come out finite and bounded.
+  for (const CigiViewDefinition& v : decode_cigi_view_packets(in).definitions)
+    if ((v.top_deg && !(std::abs(*v.top_deg) <= 90.0f)) || (v.top_deg && v.bottom_deg && !(*v.top_deg > *v.bottom_deg)))
+      __builtin_trap();
   return 0;
 }

@@ -40,6 +40,7 @@
 #include "io/pose.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
+#include "io/wire/cigi_views.h"
 #include "io/wire/native_query.h"
 #include "terrain/dem_loader.h"
 #include "terrain/earth_curvature.h"
@@ -265,6 +266,18 @@ int main(int argc, char** argv) {
         e.local_to = e.local_from + dvec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el));
       }
       expect[id] = e;
+    }
+    // Frame 1 also sets the view: 20 deg left, 3 deg down, 50 deg vertical
+    // FOV (the IG's summary.json view_control counts 2 applied).
+    if (k == 1) {
+      CigiViewControl vc;
+      vc.yaw_deg = -20.0f;
+      vc.pitch_deg = -3.0f;
+      CigiViewDefinition vd;
+      vd.top_deg = 25.0f;
+      vd.bottom_deg = -25.0f;
+      add(encode_cigi_view_control(vc, swap));
+      add(encode_cigi_view_definition(vd, swap));
     }
     // A periodic HOT (every 2nd frame) from frame 1, cancelled in frame 7.
     if (k == 1 || k == 7) {

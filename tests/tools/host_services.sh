@@ -17,6 +17,12 @@ status=0
 "$host" "$IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif" "127.0.0.1:$port" "127.0.0.1:$((port + 1))" "$frames" \
   --native "127.0.0.1:$((port + 2))" || status=$?
 wait "$pid" || { cat "$out/serve.log"; echo "FAIL ig serve exited with an error"; exit 1; }
-python3 -c "import json,sys; print('ig host_services:', json.dumps(json.load(open(sys.argv[1]))['host_services']))" \
-  "$out/serve/summary.json"
+python3 -c "
+import json, sys
+s = json.load(open(sys.argv[1]))
+print('ig host_services:', json.dumps(s['host_services']))
+print('ig view_control:', json.dumps(s['view_control']))
+if s['view_control']['applied'] != 2 or s['view_control']['notes']:
+    print('FAIL view control packets not applied as sent')
+" "$out/serve/summary.json"
 exit $status

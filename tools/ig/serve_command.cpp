@@ -23,6 +23,7 @@
 #include "cli_args.h"
 #include "commands.h"
 #include "host_services.h"
+#include "io/host_view_control.h"
 #include "io/net/udp_socket.h"
 #include "io/recording.h"
 #include "io/wire/cigi.h"
@@ -56,7 +57,8 @@ constexpr const char* kUsage =
     "  live.latency (docs/pose-filter.md).\n"
     "  --cigi-reply: Start Of Frame every frame, with the answers to the host's HAT/HOT and\n"
     "  line-of-sight requests (docs/host-services.md). Native height / line-of-sight queries\n"
-    "  on the --udp port are answered to their sender.\n"
+    "  on the --udp port are answered to their sender. CIGI View Control / View Definition\n"
+    "  set the channel's view offsets and vertical field of view.\n"
     "  --can IFNAME: SocketCAN pose source, CANaerospace and the CAN FD pose (docs/can.md);\n"
     "  altitude from id 322 unless --can-altitude, any node unless --can-node, fields\n"
     "  older than --can-max-age-ms (100) are stale. A missing or down interface is retried.\n";
@@ -201,6 +203,11 @@ int run_serve_command(const std::vector<std::string>& argv) {
     // Host services answer CIGI hosts on the reply port and native queries
     // to their sender, from the terrain as drawn (sharing the scene's
     // min/max pyramid).
+    // CIGI View Control / View Definition set the channel as a config would.
+    io::HostViewControl views;
+    const io::HostViewControl::ChannelLookup channel_spec = [&runner](std::uint16_t view) -> io::ChannelSpec* {
+      return view < runner.channels().size() ? &runner.channels()[view].spec : nullptr;
+    };
     std::unique_ptr<HostServices> services;
     if (cigi_reply || args.udp)
       services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
@@ -248,7 +255,10 @@ int run_serve_command(const std::vector<std::string>& argv) {
             }
             if (recorder) recorder->write(src.protocol, d, t);
             feed.intake().handle(src.protocol, d, t);
-            if (services && src.protocol == io::Protocol::Cigi) services->take(d);
+            if (src.protocol == io::Protocol::Cigi) {
+              if (services) services->take(d);
+              views.take(d, channel_spec);
+            }
           },
           max_datagrams);
     };
@@ -389,6 +399,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
                             {"kernel_receive_timestamps", kernel_stamped}};
     if (cigi_source) extra["cigi_sync"] = {{"frames", sync_frames}, {"waits", sync_waits}};
     if (services) extra["host_services"] = services->summary();
+    if (cigi_source) extra["view_control"] = views.summary();
     if (recorder) extra["recording"] = {{"file", *args.record}, {"datagrams", recorder->count()}};
 #ifdef IG_WITH_CAN
     if (can) extra["can"] = can->summary();

@@ -1,0 +1,136 @@
+#include "io/wire/cigi_views.h"
+
+#include <cmath>
+
+#include "io/wire/byte_io.h"
+#include "io/wire/cigi.h"
+
+namespace ig::io::wire {
+
+using bytes::Order;
+
+namespace {
+
+Order out_order(bool swap) { return swap ? bytes::swapped(bytes::kHostOrder) : bytes::kHostOrder; }
+
+std::optional<Order> order_from_magic(const std::uint8_t* m) {
+  if (m[0] == 0x80 && m[1] == 0x00) return Order::Big;
+  if (m[0] == 0x00 && m[1] == 0x80) return Order::Little;
+  return std::nullopt;
+}
+
+// Six f32 at [8], each present when its enable bit is set.
+void load_six(const std::uint8_t* p, Order o, std::uint8_t enabled, std::array<std::optional<float>*, 6> out) {
+  for (int k = 0; k < 6; ++k)
+    if ((enabled >> k) & 1u) *out[std::size_t(k)] = bytes::load_f32(p + 8 + 4 * k, o);
+}
+void store_six(std::uint8_t* p, Order o, std::array<const std::optional<float>*, 6> in, std::uint8_t& enabled) {
+  for (int k = 0; k < 6; ++k) {
+    const auto& v = *in[std::size_t(k)];
+    if (v) enabled |= std::uint8_t(1u << k);
+    bytes::store_f32(p + 8 + 4 * k, v.value_or(0.0f), o);
+  }
+}
+
+bool finite(const std::optional<float>& v) { return !v || std::isfinite(*v); }
+bool within(const std::optional<float>& v, float limit) { return !v || std::abs(*v) <= limit; }
+
+std::optional<QueryReject> check(const CigiViewControl& v) {
+  for (const auto* f : {&v.x_m, &v.y_m, &v.z_m, &v.roll_deg, &v.pitch_deg, &v.yaw_deg})
+    if (!finite(*f)) return QueryReject::NonFinite;
+  for (const auto* f : {&v.x_m, &v.y_m, &v.z_m})
+    if (!within(*f, 1e7f)) return QueryReject::OutOfRange;
+  for (const auto* f : {&v.roll_deg, &v.pitch_deg, &v.yaw_deg})
+    if (!within(*f, 360.0f)) return QueryReject::OutOfRange;
+  return std::nullopt;
+}
+
+std::optional<QueryReject> check(const CigiViewDefinition& v) {
+  for (const auto* f : {&v.near_m, &v.far_m, &v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg})
+    if (!finite(*f)) return QueryReject::NonFinite;
+  for (const auto* f : {&v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg})
+    if (!within(*f, 90.0f)) return QueryReject::OutOfRange;
+  if (v.top_deg && v.bottom_deg && !(*v.top_deg > *v.bottom_deg)) return QueryReject::OutOfRange;
+  if (v.left_deg && v.right_deg && !(*v.right_deg > *v.left_deg)) return QueryReject::OutOfRange;
+  if ((v.near_m && *v.near_m <= 0.0f) || (v.near_m && v.far_m && !(*v.far_m > *v.near_m)))
+    return QueryReject::OutOfRange;
+  return std::nullopt;
+}
+
+}  // namespace
+
+CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
+  CigiViewPackets out;
+  const std::size_t n = data.size();
+  const std::uint8_t* p = data.data();
+  if (n < kCigiIgControlSize || n > kCigiMaxDatagram || p[0] != kCigiOpIgControl || p[1] != kCigiIgControlSize ||
+      p[2] != kCigiMajorVersion)
+    return out;
+  const std::optional<Order> order = order_from_magic(p + 6);
+  if (!order) return out;
+  const Order o = *order;
+  for (std::size_t off = kCigiIgControlSize; off < n;) {
+    const std::size_t left = n - off;
+    const std::uint8_t op = p[off];
+    const bool view_packet = op == kCigiOpViewControl || op == kCigiOpViewDefinition;
+    const std::size_t size = left >= 2 ? p[off + 1] : 0;
+    if (size == 0 || size > left) {
+      if (view_packet) out.rejects.push_back(QueryReject::Truncated);
+      break;
+    }
+    const std::uint8_t* q = p + off;
+    off += size;
+    if (!view_packet) continue;
+    if (size != 32) {
+      out.rejects.push_back(QueryReject::WrongSize);
+      continue;
+    }
+    if (op == kCigiOpViewControl) {
+      CigiViewControl v;
+      v.view = bytes::load_u16(q + 2, o);
+      v.group = q[4];
+      v.entity = bytes::load_u16(q + 6, o);
+      load_six(q, o, q[5], {&v.x_m, &v.y_m, &v.z_m, &v.roll_deg, &v.pitch_deg, &v.yaw_deg});
+      if (const auto bad = check(v)) out.rejects.push_back(*bad);
+      else out.controls.push_back(v);
+    } else {
+      CigiViewDefinition v;
+      v.view = bytes::load_u16(q + 2, o);
+      v.group = q[4];
+      v.mirror = q[5] >> 6;
+      v.orthographic = (q[6] >> 3) & 1u;
+      load_six(q, o, q[5] & 0x3Fu, {&v.near_m, &v.far_m, &v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg});
+      if (const auto bad = check(v)) out.rejects.push_back(*bad);
+      else out.definitions.push_back(v);
+    }
+  }
+  return out;
+}
+
+std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const CigiViewControl& v, bool swap) {
+  const Order o = out_order(swap);
+  std::array<std::uint8_t, kCigiViewControlSize> b{};
+  b[0] = kCigiOpViewControl;
+  b[1] = std::uint8_t(b.size());
+  bytes::store_u16(b.data() + 2, v.view, o);
+  b[4] = v.group;
+  bytes::store_u16(b.data() + 6, v.entity, o);
+  store_six(b.data(), o, {&v.x_m, &v.y_m, &v.z_m, &v.roll_deg, &v.pitch_deg, &v.yaw_deg}, b[5]);
+  return b;
+}
+
+std::array<std::uint8_t, kCigiViewDefinitionSize> encode_cigi_view_definition(const CigiViewDefinition& v, bool swap) {
+  const Order o = out_order(swap);
+  std::array<std::uint8_t, kCigiViewDefinitionSize> b{};
+  b[0] = kCigiOpViewDefinition;
+  b[1] = std::uint8_t(b.size());
+  bytes::store_u16(b.data() + 2, v.view, o);
+  b[4] = v.group;
+  std::uint8_t enabled = 0;
+  store_six(b.data(), o, {&v.near_m, &v.far_m, &v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg}, enabled);
+  b[5] = std::uint8_t(enabled | (v.mirror << 6));
+  b[6] = std::uint8_t(v.orthographic ? 1u << 3 : 0u);
+  return b;
+}
+
+}  // namespace ig::io::wire
