@@ -7,32 +7,28 @@
 
 namespace ig::gl {
 
-RenderTarget::RenderTarget(int width, int height, GLenum color_format) : width_(width), height_(height) {
-  glCreateTextures(GL_TEXTURE_2D, 1, &color_);
-  glTextureStorage2D(color_, 1, color_format, width, height);
-  glCreateTextures(GL_TEXTURE_2D, 1, &depth_);
-  glTextureStorage2D(depth_, 1, GL_DEPTH_COMPONENT32F, width, height);
-  for (GLuint t : {color_, depth_}) {
+RenderTarget::RenderTarget(int width, int height, GLenum color_format)
+    : width_(width),
+      height_(height),
+      fbo_(create_framebuffer()),
+      color_(create_texture(GL_TEXTURE_2D)),
+      depth_(create_texture(GL_TEXTURE_2D)) {
+  glTextureStorage2D(color_.id(), 1, color_format, width, height);
+  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  for (GLuint t : {color_.id(), depth_.id()}) {
     glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
-  glCreateFramebuffers(1, &fbo_);
-  glNamedFramebufferTexture(fbo_, GL_COLOR_ATTACHMENT0, color_, 0);
-  glNamedFramebufferTexture(fbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
-  const GLenum status = glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  const GLenum status = glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw GlError("framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
                   " incomplete (status 0x" + std::to_string(status) + ")");
 }
 
-RenderTarget::~RenderTarget() {
-  glDeleteFramebuffers(1, &fbo_);
-  glDeleteTextures(1, &color_);
-  glDeleteTextures(1, &depth_);
-}
-
 void RenderTarget::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
 }
 
@@ -48,7 +44,7 @@ void flip_rows(std::vector<T>& v, int width, int height, int channels) {
 std::vector<std::uint8_t> RenderTarget::read_rgba() const {
   std::vector<std::uint8_t> px(size_t(width_) * height_ * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(color_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(px.size()), px.data());
+  glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(px.size()), px.data());
   flip_rows(px, width_, height_, 4);
   return px;
 }
@@ -56,7 +52,7 @@ std::vector<std::uint8_t> RenderTarget::read_rgba() const {
 std::vector<float> RenderTarget::read_depth() const {
   std::vector<float> d(size_t(width_) * height_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(depth_, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(d.size() * sizeof(float)), d.data());
+  glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(d.size() * sizeof(float)), d.data());
   flip_rows(d, width_, height_, 1);
   return d;
 }

@@ -88,8 +88,17 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
     if (id_) glDeleteProgram(id_);
     id_ = o.id_;
     o.id_ = 0;
+    locations_ = std::move(o.locations_);
   }
   return *this;
+}
+
+GLint ShaderProgram::location(const char* name) const {
+  const std::string_view key(name);
+  if (auto it = locations_.find(key); it != locations_.end()) return it->second;
+  const GLint loc = glGetUniformLocation(id_, name);
+  locations_.emplace(std::string(key), loc);
+  return loc;
 }
 
 void ShaderProgram::set(const char* n, const glm::vec2& v) const { glProgramUniform2fv(id_, location(n), 1, glm::value_ptr(v)); }

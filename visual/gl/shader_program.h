@@ -4,7 +4,10 @@
 
 #include <epoxy/gl.h>
 
+#include <functional>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -25,14 +28,16 @@ class ShaderProgram {
   ShaderProgram(const std::string& dir, const std::string& vertex_file,
                 const std::vector<std::string>& fragment_files);
   ~ShaderProgram();
-  ShaderProgram(ShaderProgram&& o) noexcept : id_(o.id_) { o.id_ = 0; }
+  ShaderProgram(ShaderProgram&& o) noexcept : id_(o.id_), locations_(std::move(o.locations_)) { o.id_ = 0; }
   ShaderProgram& operator=(ShaderProgram&& o) noexcept;
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;
 
   GLuint id() const { return id_; }
   void use() const { glUseProgram(id_); }
-  GLint location(const char* name) const { return glGetUniformLocation(id_, name); }
+  // Cached per program: uniforms are set per block per frame, and the
+  // driver's lookup is a string search (-1 for names the program lacks).
+  GLint location(const char* name) const;
   void set(const char* name, int v) const { glProgramUniform1i(id_, location(name), v); }
   void set(const char* name, float v) const { glProgramUniform1f(id_, location(name), v); }
   void set(const char* name, const glm::vec2& v) const;
@@ -42,7 +47,12 @@ class ShaderProgram {
   void set(const char* name, const glm::mat4& m) const;
 
  private:
+  struct NameHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
   GLuint id_ = 0;
+  mutable std::unordered_map<std::string, GLint, NameHash, std::equal_to<>> locations_;
 };
 
 // Directory holding the GLSL files: $IG_SHADER_DIR, else "shaders" beside

@@ -20,11 +20,6 @@ bool PassRecorder::supported() {
 PassRecorder::PassRecorder(std::vector<std::string> pass_names)
     : names_(std::move(pass_names)), supported_(supported()) {}
 
-PassRecorder::~PassRecorder() {
-  for (auto& s : segments_)
-    if (supported_) glDeleteQueries(3, s.queries.data());
-}
-
 void PassRecorder::begin_frame() {
   if (active_) end();
   used_ = 0;
@@ -38,15 +33,14 @@ void PassRecorder::begin(std::string_view pass) {
   if (index < 0) throw std::logic_error("PassRecorder: pass '" + std::string(pass) + "' was not declared");
   if (used_ == int(segments_.size())) {
     segments_.emplace_back();
-    // glGenQueries, not glCreateQueries: Mesa 22.3 refuses the pipeline
-    // statistics targets in glCreateQueries (GL_INVALID_ENUM).
-    if (supported_) glGenQueries(3, segments_.back().queries.data());
+    if (supported_)
+      for (auto& q : segments_.back().queries) q = create_query();
   }
   Segment& s = segments_[used_];
   s.pass = index;
   s.tally_at_begin = work_tally();
   if (supported_)
-    for (int q = 0; q < 3; ++q) glBeginQuery(kTargets[q], s.queries[q]);
+    for (int q = 0; q < 3; ++q) glBeginQuery(kTargets[q], s.queries[q].id());
   active_ = true;
 }
 
@@ -69,7 +63,7 @@ std::vector<PassWork> PassRecorder::read() {
     PassWork& w = out[s.pass];
     if (supported_) {
       GLuint64 v[3] = {0, 0, 0};
-      for (int q = 0; q < 3; ++q) glGetQueryObjectui64v(s.queries[q], GL_QUERY_RESULT, &v[q]);
+      for (int q = 0; q < 3; ++q) glGetQueryObjectui64v(s.queries[q].id(), GL_QUERY_RESULT, &v[q]);
       w.vs_invocations += v[0];
       w.fs_invocations += v[1];
       w.primitives += v[2];

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "gl/gl_objects.h"
+
 namespace ig::gl {
 
 // Draw calls and bytes uploaded by GL calls made on this thread (every draw
@@ -41,7 +43,6 @@ struct PassWork {
 class PassRecorder {
  public:
   explicit PassRecorder(std::vector<std::string> pass_names);
-  ~PassRecorder();
   PassRecorder(const PassRecorder&) = delete;
   PassRecorder& operator=(const PassRecorder&) = delete;
 
@@ -64,7 +65,7 @@ class PassRecorder {
  private:
   struct Segment {
     int pass = 0;
-    std::array<GLuint, 3> queries{};
+    std::array<Query, 3> queries;
     WorkTally tally_at_begin, tally_at_end;
   };
   std::vector<std::string> names_;

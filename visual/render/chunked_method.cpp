@@ -60,25 +60,13 @@ ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shade
   }
   total_indices_ = GLsizei(idx.size());
 
-  glCreateBuffers(1, &vbo_);
-  glNamedBufferStorage(vbo_, GLsizeiptr(verts.size() * sizeof(verts[0])), verts.data(), 0);
-  glCreateBuffers(1, &ibo_);
-  glNamedBufferStorage(ibo_, GLsizeiptr(idx.size() * sizeof(idx[0])), idx.data(), 0);
-  glCreateVertexArrays(1, &vao_);
-  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 4 * sizeof(std::int16_t));
-  glVertexArrayElementBuffer(vao_, ibo_);
-  glEnableVertexArrayAttrib(vao_, 0);
-  glVertexArrayAttribIFormat(vao_, 0, 2, GL_SHORT, 0);
-  glVertexArrayAttribBinding(vao_, 0, 0);
-  glEnableVertexArrayAttrib(vao_, 1);
-  glVertexArrayAttribIFormat(vao_, 1, 1, GL_SHORT, 2 * sizeof(std::int16_t));
-  glVertexArrayAttribBinding(vao_, 1, 0);
-}
-
-ChunkedMethod::~ChunkedMethod() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vbo_);
-  glDeleteBuffers(1, &ibo_);
+  vbo_ = gl::create_buffer(verts);
+  ibo_ = gl::create_buffer(idx);
+  vao_ = gl::create_vertex_array();
+  glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, 4 * sizeof(std::int16_t));
+  glVertexArrayElementBuffer(vao_.id(), ibo_.id());
+  gl::vertex_attrib_int(vao_, 0, 2, GL_SHORT, 0, 0);
+  gl::vertex_attrib_int(vao_, 1, 1, GL_SHORT, 2 * sizeof(std::int16_t), 0);
 }
 
 std::vector<std::string> ChunkedMethod::column_names() const {
@@ -143,7 +131,7 @@ MethodFrameStats ChunkedMethod::draw(const Camera& camera, const gl::RenderTarge
     const GLint loc_origin = program_.location("u_origin"), loc_rel = program_.location("u_origin_rel");
     const GLint loc_stride = program_.location("u_stride"), loc_sides = program_.location("u_skirt_sides");
     const GLint loc_bottom = program_.location("u_skirt_bottom");
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.id());
     for (const DrawnChunk& d : drawn_) {
       const lod::ChunkNode& n = tree_.node(d.node);
       int sides = 0;

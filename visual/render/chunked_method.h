@@ -17,6 +17,7 @@
 
 #include <vector>
 
+#include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "lod/chunk_quadtree.h"
 #include "render/terrain_method.h"
@@ -26,7 +27,6 @@ namespace ig::render {
 class ChunkedMethod final : public TerrainMethod {
  public:
   ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
-  ~ChunkedMethod() override;
   ChunkedMethod(const ChunkedMethod&) = delete;
   ChunkedMethod& operator=(const ChunkedMethod&) = delete;
 
@@ -56,7 +56,8 @@ class ChunkedMethod final : public TerrainMethod {
   int viewport_h_ = 1024;  // until the first set_viewport()
   gl::ShaderProgram program_;
   lod::ChunkQuadtree tree_;
-  GLuint vao_ = 0, vbo_ = 0, ibo_ = 0;
+  gl::VertexArray vao_;
+  gl::Buffer vbo_, ibo_;
   GLsizei surface_indices_ = 0, total_indices_ = 0;
   std::vector<DrawnChunk> drawn_;
 };

@@ -17,15 +17,15 @@ std::vector<std::string> pass_names_of(const TerrainMethod& method) {
 }  // namespace
 
 FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
-    : scene_(scene), method_(&method), sky_(shader_dir, "sky.vert", "sky.frag"), recorder_(pass_names_of(method)) {
-  glCreateVertexArrays(1, &empty_vao_);
+    : scene_(scene),
+      method_(&method),
+      sky_(shader_dir, "sky.vert", "sky.frag"),
+      recorder_(pass_names_of(method)),
+      empty_vao_(gl::create_vertex_array()) {
   method_->set_pass_recorder(&recorder_);
 }
 
-FrameRenderer::~FrameRenderer() {
-  method_->set_pass_recorder(nullptr);
-  glDeleteVertexArrays(1, &empty_vao_);
-}
+FrameRenderer::~FrameRenderer() { method_->set_pass_recorder(nullptr); }
 
 void FrameRenderer::set_method(TerrainMethod& method) {
   method_->set_pass_recorder(nullptr);
@@ -74,7 +74,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   sky_.set("u_sun_dir", s.sun_direction);
   glDepthFunc(GL_GEQUAL);  // only where the depth buffer still holds the clear value
   glDepthMask(GL_FALSE);
-  glBindVertexArray(empty_vao_);
+  glBindVertexArray(empty_vao_.id());
   recorder_.begin("sky");
   glDrawArrays(GL_TRIANGLES, 0, 3);
   gl::count_draw();

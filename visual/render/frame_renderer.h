@@ -4,6 +4,7 @@
 // wall clock and closed with glFinish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
 
+#include "gl/gl_objects.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
 #include "gl/work_counters.h"
@@ -46,7 +47,7 @@ class FrameRenderer {
   TerrainMethod* method_;
   gl::ShaderProgram sky_;
   gl::PassRecorder recorder_;
-  GLuint empty_vao_ = 0;
+  gl::VertexArray empty_vao_;  // the sky's full-screen triangle needs no vertices
   bool wireframe_ = false;
 };
 

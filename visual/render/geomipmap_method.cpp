@@ -47,21 +47,12 @@ GeoMipMapMethod::GeoMipMapMethod(const TerrainScene& scene, const std::string& s
   std::vector<std::int16_t> verts;
   for (int j = 0; j <= N; ++j)
     for (int i = 0; i <= N; ++i) verts.insert(verts.end(), {std::int16_t(i), std::int16_t(j)});
-  glCreateBuffers(1, &vbo_);
-  glNamedBufferStorage(vbo_, GLsizeiptr(verts.size() * sizeof(verts[0])), verts.data(), 0);
-  glCreateVertexArrays(1, &vao_);
-  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 2 * sizeof(std::int16_t));
-  glEnableVertexArrayAttrib(vao_, 0);
-  glVertexArrayAttribIFormat(vao_, 0, 2, GL_SHORT, 0);
-  glVertexArrayAttribBinding(vao_, 0, 0);
+  vbo_ = gl::create_buffer(verts);
+  vao_ = gl::create_vertex_array();
+  glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, 2 * sizeof(std::int16_t));
+  gl::vertex_attrib_int(vao_, 0, 2, GL_SHORT, 0, 0);
   levels_.assign(blocks_.blocks().size(), 0);
   distances_.assign(blocks_.blocks().size(), 0.0);
-}
-
-GeoMipMapMethod::~GeoMipMapMethod() {
-  for (auto& [key, ix] : indices_) glDeleteBuffers(1, &ix.ibo);
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vbo_);
 }
 
 std::vector<std::string> GeoMipMapMethod::column_names() const {
@@ -120,9 +111,8 @@ const GeoMipMapMethod::Indices& GeoMipMapMethod::indices_for(const lod::GeoMipCo
   for (const glm::ivec2& c : lod::geomipmap_triangles(config)) idx.push_back(std::uint16_t(c.y * (N + 1) + c.x));
   Indices ix;
   ix.count = GLsizei(idx.size());
-  glCreateBuffers(1, &ix.ibo);
-  glNamedBufferStorage(ix.ibo, GLsizeiptr(idx.size() * sizeof(idx[0])), idx.data(), 0);
-  return indices_.emplace(config.key(), ix).first->second;
+  ix.ibo = gl::create_buffer(idx);
+  return indices_.emplace(config.key(), std::move(ix)).first->second;
 }
 
 MethodFrameStats GeoMipMapMethod::draw(const Camera& camera, const gl::RenderTarget&) {
@@ -136,11 +126,11 @@ MethodFrameStats GeoMipMapMethod::draw(const Camera& camera, const gl::RenderTar
     scene_.bind_common(program_, camera);
     const GLint loc_origin = program_.location("u_origin");
     const GLint loc_rel = program_.location("u_origin_rel");
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.id());
     for (const DrawnBlock& d : drawn_) {
       const lod::GeoMipBlock& b = blocks_.block(d.bx, d.by);
       const Indices& ix = indices_for(d.config);
-      glVertexArrayElementBuffer(vao_, ix.ibo);
+      glVertexArrayElementBuffer(vao_.id(), ix.ibo.id());
       // Eye-relative block origin in double, then to float (camera-relative rendering).
       const glm::dvec3 rel = glm::dvec3(b.i0 * hf.spacing_x_m, b.j0 * hf.spacing_y_m, 0.0) - camera.position;
       glProgramUniform2i(program_.id(), loc_origin, b.i0, b.j0);

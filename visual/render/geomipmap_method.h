@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "lod/geomipmap_blocks.h"
 #include "render/terrain_method.h"
@@ -21,7 +22,6 @@ namespace ig::render {
 class GeoMipMapMethod final : public TerrainMethod {
  public:
   GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
-  ~GeoMipMapMethod() override;
   GeoMipMapMethod(const GeoMipMapMethod&) = delete;
   GeoMipMapMethod& operator=(const GeoMipMapMethod&) = delete;
 
@@ -53,7 +53,7 @@ class GeoMipMapMethod final : public TerrainMethod {
 
  private:
   struct Indices {
-    GLuint ibo = 0;
+    gl::Buffer ibo;
     GLsizei count = 0;
   };
   const Indices& indices_for(const lod::GeoMipConfig& config);
@@ -63,7 +63,8 @@ class GeoMipMapMethod final : public TerrainMethod {
   int viewport_h_ = 1024;  // until the first set_viewport()
   gl::ShaderProgram program_;
   lod::GeoMipMapBlocks blocks_;
-  GLuint vao_ = 0, vbo_ = 0;
+  gl::VertexArray vao_;
+  gl::Buffer vbo_;
   std::unordered_map<std::uint32_t, Indices> indices_;
   std::vector<int> levels_;
   std::vector<double> distances_;  // eye to each block's box, last update

@@ -29,33 +29,23 @@ GridMesh::GridMesh(int n) : n_(n) {
       }
   index_count_ = GLsizei(idx.size());
 
-  glCreateBuffers(1, &vbo_);
-  glNamedBufferStorage(vbo_, GLsizeiptr(verts.size() * sizeof(verts[0])), verts.data(), 0);
-  glCreateBuffers(1, &ibo_);
-  glNamedBufferStorage(ibo_, GLsizeiptr(idx.size() * sizeof(idx[0])), idx.data(), 0);
-  glCreateVertexArrays(1, &vao_);
-  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 2 * sizeof(std::int16_t));
-  glVertexArrayElementBuffer(vao_, ibo_);
-  glEnableVertexArrayAttrib(vao_, 0);
-  glVertexArrayAttribIFormat(vao_, 0, 2, GL_SHORT, 0);
-  glVertexArrayAttribBinding(vao_, 0, 0);
-}
-
-GridMesh::~GridMesh() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vbo_);
-  glDeleteBuffers(1, &ibo_);
+  vbo_ = gl::create_buffer(verts);
+  ibo_ = gl::create_buffer(idx);
+  vao_ = gl::create_vertex_array();
+  glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, 2 * sizeof(std::int16_t));
+  glVertexArrayElementBuffer(vao_.id(), ibo_.id());
+  gl::vertex_attrib_int(vao_, 0, 2, GL_SHORT, 0, 0);
 }
 
 void GridMesh::draw() const {
-  glBindVertexArray(vao_);
+  glBindVertexArray(vao_.id());
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
   gl::count_draw();
 }
 
 void GridMesh::draw_quadrant(int q) const {
   const GLsizei count = index_count_ / 4;
-  glBindVertexArray(vao_);
+  glBindVertexArray(vao_.id());
   glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,
                  reinterpret_cast<const void*>(std::size_t(q) * std::size_t(count) * sizeof(std::uint32_t)));
   gl::count_draw();

@@ -5,16 +5,13 @@
 // (i,j)-(i+1,j+1) diagonal, the convention the ray cast and
 // Heightfield::sample_surface() also use.
 
-#include <epoxy/gl.h>
+#include "gl/gl_objects.h"
 
 namespace ig::render {
 
 class GridMesh {
  public:
   explicit GridMesh(int quads_per_side);
-  ~GridMesh();
-  GridMesh(const GridMesh&) = delete;
-  GridMesh& operator=(const GridMesh&) = delete;
 
   int quads_per_side() const { return n_; }
   GLsizei index_count() const { return index_count_; }
@@ -25,7 +22,8 @@ class GridMesh {
 
  private:
   int n_;
-  GLuint vao_ = 0, vbo_ = 0, ibo_ = 0;
+  gl::VertexArray vao_;
+  gl::Buffer vbo_, ibo_;
   GLsizei index_count_ = 0;
 };
 

@@ -9,17 +9,10 @@ namespace ig::render {
 
 SampleTriangleStream::SampleTriangleStream(const std::string& shader_dir)
     : program_(shader_dir, "level0.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}) {
-  glCreateBuffers(1, &vbo_);
-  glCreateVertexArrays(1, &vao_);
-  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, sizeof(glm::u16vec2));
-  glEnableVertexArrayAttrib(vao_, 0);
-  glVertexArrayAttribIFormat(vao_, 0, 2, GL_UNSIGNED_SHORT, 0);  // -> ivec2 a_sample
-  glVertexArrayAttribBinding(vao_, 0, 0);
-}
-
-SampleTriangleStream::~SampleTriangleStream() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vbo_);
+  vbo_ = gl::create_buffer();
+  vao_ = gl::create_vertex_array();
+  glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, sizeof(glm::u16vec2));
+  gl::vertex_attrib_int(vao_, 0, 2, GL_UNSIGNED_SHORT, 0, 0);  // -> ivec2 a_sample
 }
 
 void SampleTriangleStream::draw(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene,
@@ -29,8 +22,8 @@ void SampleTriangleStream::draw(const std::vector<glm::u16vec2>& vertices, const
   // Orphan the old storage (the GPU may still read it) rather than wait for
   // it; grow geometrically so steady frames never reallocate on our side.
   if (bytes > capacity_) capacity_ = std::max<GLsizeiptr>(bytes + bytes / 2, 1 << 16);
-  glNamedBufferData(vbo_, capacity_, nullptr, GL_STREAM_DRAW);
-  glNamedBufferSubData(vbo_, 0, bytes, vertices.data());
+  glNamedBufferData(vbo_.id(), capacity_, nullptr, GL_STREAM_DRAW);
+  glNamedBufferSubData(vbo_.id(), 0, bytes, vertices.data());
   gl::count_upload(std::uint64_t(bytes));
 
   const auto& hf = scene.heightfield();
@@ -42,7 +35,7 @@ void SampleTriangleStream::draw(const std::vector<glm::u16vec2>& vertices, const
   program_.set("u_eye_sample", eye_sample);
   program_.set("u_eye_frac", glm::vec3(camera.position.x - eye_sample.x * spacing.x,
                                        camera.position.y - eye_sample.y * spacing.y, camera.position.z));
-  glBindVertexArray(vao_);
+  glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices.size()));
   gl::count_draw();
 }

@@ -10,6 +10,7 @@
 
 #include <glm/gtc/type_precision.hpp>
 
+#include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/camera.h"
 #include "render/terrain_scene.h"
@@ -19,16 +20,14 @@ namespace ig::render {
 class SampleTriangleStream {
  public:
   explicit SampleTriangleStream(const std::string& shader_dir);
-  ~SampleTriangleStream();
-  SampleTriangleStream(const SampleTriangleStream&) = delete;
-  SampleTriangleStream& operator=(const SampleTriangleStream&) = delete;
 
   // Uploads 3 vertices per triangle and draws them into the bound target.
   void draw(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene, const Camera& camera);
 
  private:
   gl::ShaderProgram program_;
-  GLuint vao_ = 0, vbo_ = 0;
+  gl::VertexArray vao_;
+  gl::Buffer vbo_;
   GLsizeiptr capacity_ = 0;  // bytes allocated for the buffer
 };
 

@@ -25,14 +25,14 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   shading_.sun_direction = glm::normalize(shading_.sun_direction);
 
   const auto t0 = std::chrono::steady_clock::now();
-  glCreateTextures(GL_TEXTURE_2D, 1, &height_tex_);
-  glTextureStorage2D(height_tex_, 1, GL_R32F, hf.width, hf.height);
+  height_tex_ = gl::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(height_tex_.id(), 1, GL_R32F, hf.width, hf.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(height_tex_, 0, 0, 0, hf.width, hf.height, GL_RED, GL_FLOAT, hf.heights.data());
-  glTextureParameteri(height_tex_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(height_tex_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(height_tex_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(height_tex_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureSubImage2D(height_tex_.id(), 0, 0, 0, hf.width, hf.height, GL_RED, GL_FLOAT, hf.heights.data());
+  glTextureParameteri(height_tex_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(height_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(height_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(height_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glFinish();  // so upload_ms is the real transfer, not just the enqueue
   upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
@@ -48,20 +48,15 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     const size_t row = size_t(spec.width) * 3;
     for (int y = 0; y < spec.height; ++y)
       std::copy_n(rgb.begin() + y * row, row, flipped.begin() + (spec.height - 1 - y) * row);
-    glCreateTextures(GL_TEXTURE_2D, 1, &imagery_tex_);
+    imagery_tex_ = gl::create_texture(GL_TEXTURE_2D);
     const int levels = 1 + int(std::floor(std::log2(std::max(spec.width, spec.height))));
-    glTextureStorage2D(imagery_tex_, levels, GL_RGB8, spec.width, spec.height);
+    glTextureStorage2D(imagery_tex_.id(), levels, GL_RGB8, spec.width, spec.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(imagery_tex_, 0, 0, 0, spec.width, spec.height, GL_RGB, GL_UNSIGNED_BYTE, flipped.data());
-    glGenerateTextureMipmap(imagery_tex_);
-    glTextureParameteri(imagery_tex_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(imagery_tex_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureSubImage2D(imagery_tex_.id(), 0, 0, 0, spec.width, spec.height, GL_RGB, GL_UNSIGNED_BYTE, flipped.data());
+    glGenerateTextureMipmap(imagery_tex_.id());
+    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   }
-}
-
-TerrainScene::~TerrainScene() {
-  glDeleteTextures(1, &height_tex_);
-  if (imagery_tex_) glDeleteTextures(1, &imagery_tex_);
 }
 
 Camera TerrainScene::local_camera(const Camera& world) const {
@@ -72,11 +67,11 @@ Camera TerrainScene::local_camera(const Camera& world) const {
 }
 
 void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera) const {
-  glBindTextureUnit(0, height_tex_);
+  glBindTextureUnit(0, height_tex_.id());
   p.set("u_height", 0);
   p.set("u_has_imagery", has_imagery() ? 1 : 0);
   if (has_imagery()) {
-    glBindTextureUnit(1, imagery_tex_);
+    glBindTextureUnit(1, imagery_tex_.id());
     p.set("u_imagery", 1);
   }
   p.set("u_dem_size", glm::ivec2(heightfield_.width, heightfield_.height));

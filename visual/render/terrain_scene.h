@@ -25,6 +25,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/camera.h"
 #include "terrain/height_pyramid.h"
@@ -46,7 +47,6 @@ class TerrainScene {
   // (no surface to draw).
   TerrainScene(const terrain::Heightfield& heightfield, const ShadingParams& shading,
                const std::optional<std::string>& imagery_path = std::nullopt);
-  ~TerrainScene();
   TerrainScene(const TerrainScene&) = delete;
   TerrainScene& operator=(const TerrainScene&) = delete;
 
@@ -54,8 +54,8 @@ class TerrainScene {
   const ShadingParams& shading() const { return shading_; }
   // Fog visibility in metres (0 = no fog); used from the next bind_common.
   void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
-  GLuint height_texture() const { return height_tex_; }
-  bool has_imagery() const { return imagery_tex_ != 0; }
+  GLuint height_texture() const { return height_tex_.id(); }
+  bool has_imagery() const { return bool(imagery_tex_); }
   double upload_ms() const { return upload_ms_; }
   // The min/max pyramid of the heightfield (ray casts, culling bounds),
   // built on first use and shared by every method and channel on this scene:
@@ -81,8 +81,8 @@ class TerrainScene {
  private:
   const terrain::Heightfield& heightfield_;
   ShadingParams shading_;
-  GLuint height_tex_ = 0;
-  GLuint imagery_tex_ = 0;
+  gl::Texture height_tex_;
+  gl::Texture imagery_tex_;  // empty without imagery
   double upload_ms_ = 0.0;
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   glm::dvec3 world_origin_{0.0};

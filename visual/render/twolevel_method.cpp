@@ -51,23 +51,19 @@ bool terrain_in_view(const terrain::HeightPyramid& p, const terrain::Heightfield
   return false;
 }
 
-GLuint make_query() {
-  GLuint q = 0;
-  glCreateQueries(GL_SAMPLES_PASSED, 1, &q);
-  return q;
-}
-
 }  // namespace
 
 // Walls around Level1's square (close the step between Level1's edge and
 // Level0's coarser surface there, whichever is higher) and the transition
 // band ring, for one (N, w_trans) pair.
 struct TwoLevelMethod::SizeMeshes {
-  GLuint wall_vao = 0, wall_vbo[2] = {0, 0}, wall_ibo = 0;
+  gl::VertexArray wall_vao;
+  gl::Buffer wall_local, wall_heights, wall_ibo;
   GLsizei wall_indices = 0;
   std::vector<glm::ivec2> perimeter;  // Level1 edge samples, relative to its origin
   std::vector<glm::vec2> wall_z;      // per wall vertex: (1, absolute height)
-  GLuint ring_vao = 0, ring_vbo = 0, ring_ibo = 0;
+  gl::VertexArray ring_vao;
+  gl::Buffer ring_vbo, ring_ibo;
   GLsizei ring_indices = 0;
 
   SizeMeshes(int n, int w, int stride) {
@@ -87,22 +83,15 @@ struct TwoLevelMethod::SizeMeshes {
       idx.insert(idx.end(), {a, b, b + 1, a, b + 1, a + 1});
     }
     wall_indices = GLsizei(idx.size());
-    glCreateBuffers(2, wall_vbo);
-    glNamedBufferStorage(wall_vbo[0], GLsizeiptr(local.size() * 2), local.data(), 0);
-    glNamedBufferStorage(wall_vbo[1], GLsizeiptr(wall_z.size() * sizeof(glm::vec2)), wall_z.data(),
-                         GL_DYNAMIC_STORAGE_BIT);
-    glCreateBuffers(1, &wall_ibo);
-    glNamedBufferStorage(wall_ibo, GLsizeiptr(idx.size() * 4), idx.data(), 0);
-    glCreateVertexArrays(1, &wall_vao);
-    glVertexArrayVertexBuffer(wall_vao, 0, wall_vbo[0], 0, 4);
-    glVertexArrayVertexBuffer(wall_vao, 1, wall_vbo[1], 0, sizeof(glm::vec2));
-    glVertexArrayElementBuffer(wall_vao, wall_ibo);
-    glEnableVertexArrayAttrib(wall_vao, 0);
-    glVertexArrayAttribIFormat(wall_vao, 0, 2, GL_SHORT, 0);
-    glVertexArrayAttribBinding(wall_vao, 0, 0);
-    glEnableVertexArrayAttrib(wall_vao, 1);
-    glVertexArrayAttribFormat(wall_vao, 1, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(wall_vao, 1, 1);
+    wall_local = gl::create_buffer(local);
+    wall_heights = gl::create_buffer(wall_z, GL_DYNAMIC_STORAGE_BIT);
+    wall_ibo = gl::create_buffer(idx);
+    wall_vao = gl::create_vertex_array();
+    glVertexArrayVertexBuffer(wall_vao.id(), 0, wall_local.id(), 0, 4);
+    glVertexArrayVertexBuffer(wall_vao.id(), 1, wall_heights.id(), 0, sizeof(glm::vec2));
+    glVertexArrayElementBuffer(wall_vao.id(), wall_ibo.id());
+    gl::vertex_attrib_int(wall_vao, 0, 2, GL_SHORT, 0, 0);
+    gl::vertex_attrib_float(wall_vao, 1, 2, GL_FLOAT, 0, 1);
 
     // Band ring: the grid grown by w on every side, minus Level1's square,
     // every `stride` samples (w and n - 1 are multiples of stride).
@@ -123,24 +112,12 @@ struct TwoLevelMethod::SizeMeshes {
         idx.insert(idx.end(), {v(a, b), v(a + 1, b), v(a + 1, b + 1), v(a, b), v(a + 1, b + 1), v(a, b + 1)});
       }
     ring_indices = GLsizei(idx.size());
-    glCreateBuffers(1, &ring_vbo);
-    glNamedBufferStorage(ring_vbo, GLsizeiptr(local.size() * 2), local.data(), 0);
-    glCreateBuffers(1, &ring_ibo);
-    glNamedBufferStorage(ring_ibo, GLsizeiptr(std::max<size_t>(idx.size(), 1) * 4), idx.data(), 0);
-    glCreateVertexArrays(1, &ring_vao);
-    glVertexArrayVertexBuffer(ring_vao, 0, ring_vbo, 0, 4);
-    glVertexArrayElementBuffer(ring_vao, ring_ibo);
-    glEnableVertexArrayAttrib(ring_vao, 0);
-    glVertexArrayAttribIFormat(ring_vao, 0, 2, GL_SHORT, 0);
-    glVertexArrayAttribBinding(ring_vao, 0, 0);
-  }
-  ~SizeMeshes() {
-    glDeleteVertexArrays(1, &wall_vao);
-    glDeleteBuffers(2, wall_vbo);
-    glDeleteBuffers(1, &wall_ibo);
-    glDeleteVertexArrays(1, &ring_vao);
-    glDeleteBuffers(1, &ring_vbo);
-    glDeleteBuffers(1, &ring_ibo);
+    ring_vbo = gl::create_buffer(local);
+    ring_ibo = gl::create_buffer(idx);
+    ring_vao = gl::create_vertex_array();
+    glVertexArrayVertexBuffer(ring_vao.id(), 0, ring_vbo.id(), 0, 4);
+    glVertexArrayElementBuffer(ring_vao.id(), ring_ibo.id());
+    gl::vertex_attrib_int(ring_vao, 0, 2, GL_SHORT, 0, 0);
   }
 };
 
@@ -177,39 +154,24 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
     std::memcpy(&bits, &lift[v], 4);
     samples.insert(samples.end(), {level0_.samples[v].x, level0_.samples[v].y, bits});
   }
-  glCreateBuffers(1, &level0_vbo_);
-  glNamedBufferStorage(level0_vbo_, GLsizeiptr(samples.size() * 4), samples.data(), 0);
-  glCreateBuffers(1, &level0_ibo_);
-  glNamedBufferStorage(level0_ibo_, GLsizeiptr(level0_.indices.size() * 4), level0_.indices.data(), 0);
-  glCreateVertexArrays(1, &level0_vao_);
-  glVertexArrayVertexBuffer(level0_vao_, 0, level0_vbo_, 0, 12);
-  glVertexArrayElementBuffer(level0_vao_, level0_ibo_);
-  glEnableVertexArrayAttrib(level0_vao_, 0);
-  glVertexArrayAttribIFormat(level0_vao_, 0, 2, GL_INT, 0);
-  glVertexArrayAttribBinding(level0_vao_, 0, 0);
-  glEnableVertexArrayAttrib(level0_vao_, 1);
-  glVertexArrayAttribFormat(level0_vao_, 1, 1, GL_FLOAT, GL_FALSE, 8);
-  glVertexArrayAttribBinding(level0_vao_, 1, 0);
+  level0_vbo_ = gl::create_buffer(samples);
+  level0_ibo_ = gl::create_buffer(level0_.indices);
+  level0_vao_ = gl::create_vertex_array();
+  glVertexArrayVertexBuffer(level0_vao_.id(), 0, level0_vbo_.id(), 0, 12);
+  glVertexArrayElementBuffer(level0_vao_.id(), level0_ibo_.id());
+  gl::vertex_attrib_int(level0_vao_, 0, 2, GL_INT, 0, 0);
+  gl::vertex_attrib_float(level0_vao_, 1, 1, GL_FLOAT, 8, 0);
 
-  glCreateFramebuffers(1, &count_fbo_);
-  glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
-  glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
-  glCreateVertexArrays(1, &empty_vao_);
+  // The count pass draws into a framebuffer without attachments.
+  count_fbo_ = gl::create_framebuffer();
+  glNamedFramebufferParameteri(count_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
+  glNamedFramebufferParameteri(count_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
+  empty_vao_ = gl::create_vertex_array();
   for (auto& pair : queries_)
-    for (auto& q : pair) q = make_query();
+    for (auto& q : pair) q = gl::create_query();
 }
 
-TwoLevelMethod::~TwoLevelMethod() {
-  size_meshes_.clear();
-  glDeleteVertexArrays(1, &level0_vao_);
-  glDeleteBuffers(1, &level0_vbo_);
-  glDeleteBuffers(1, &level0_ibo_);
-  band_target_.reset();
-  glDeleteTextures(1, &beta_tex_);
-  glDeleteFramebuffers(1, &count_fbo_);
-  glDeleteVertexArrays(1, &empty_vao_);
-  for (auto& pair : queries_) glDeleteQueries(2, pair);
-}
+TwoLevelMethod::~TwoLevelMethod() = default;
 
 std::vector<std::string> TwoLevelMethod::pass_names() const {
   if (options_.band_inline) return {"level1", "level0", "count"};  // the band is shaded inside level0
@@ -266,11 +228,11 @@ double TwoLevelMethod::read_previous_ratio() {
   const int prev = parity_ ^ 1;
   if (!query_pending_[prev]) return -1.0;
   GLuint available = 0;
-  glGetQueryObjectuiv(queries_[prev][1], GL_QUERY_RESULT_AVAILABLE, &available);
+  glGetQueryObjectuiv(queries_[prev][1].id(), GL_QUERY_RESULT_AVAILABLE, &available);
   if (!available) return -1.0;
   GLuint64 level1 = 0, terrain = 0;
-  glGetQueryObjectui64v(queries_[prev][0], GL_QUERY_RESULT, &level1);
-  glGetQueryObjectui64v(queries_[prev][1], GL_QUERY_RESULT, &terrain);
+  glGetQueryObjectui64v(queries_[prev][0].id(), GL_QUERY_RESULT, &level1);
+  glGetQueryObjectui64v(queries_[prev][1].id(), GL_QUERY_RESULT, &terrain);
   query_pending_[prev] = false;
   return terrain > 0 ? double(level1) / double(terrain) : -1.0;
 }
@@ -381,14 +343,14 @@ void TwoLevelMethod::upload_beta_template(int n, int band_w) {
           float(options_.gaussian_beta ? (std::exp(-4.5 * t * t) - g) / (1.0 - g) : 1.0 - t);
     }
   if (!beta_tex_) {
-    glCreateTextures(GL_TEXTURE_2D, 1, &beta_tex_);
-    glTextureStorage2D(beta_tex_, 1, GL_R16F, kSize, kSize);
-    glTextureParameteri(beta_tex_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(beta_tex_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(beta_tex_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(beta_tex_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    beta_tex_ = gl::create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(beta_tex_.id(), 1, GL_R16F, kSize, kSize);
+    glTextureParameteri(beta_tex_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(beta_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(beta_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(beta_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
-  glTextureSubImage2D(beta_tex_, 0, 0, 0, kSize, kSize, GL_RED, GL_FLOAT, beta.data());
+  glTextureSubImage2D(beta_tex_.id(), 0, 0, 0, kSize, kSize, GL_RED, GL_FLOAT, beta.data());
   gl::count_upload(std::uint64_t(beta.size() * sizeof(float)));
   beta_for_ = {n, band_w};
 }
@@ -439,11 +401,11 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       level1_tris = 2LL * kBlockQuads * kBlockQuads * (long long)visible_blocks_.size();
       SizeMeshes& m = meshes_for(n, band_w_);
       const GLsizeiptr wall_bytes = GLsizeiptr(m.wall_z.size() * sizeof(glm::vec2));
-      glNamedBufferSubData(m.wall_vbo[1], 0, wall_bytes, m.wall_z.data());
+      glNamedBufferSubData(m.wall_heights.id(), 0, wall_bytes, m.wall_z.data());
       gl::count_upload(std::uint64_t(wall_bytes));
       grid_program_.set("u_origin", origin_);
       grid_program_.set("u_origin_rel", rel(origin_));
-      glBindVertexArray(m.wall_vao);
+      glBindVertexArray(m.wall_vao.id());
       glDrawElements(GL_TRIANGLES, m.wall_indices, GL_UNSIGNED_INT, nullptr);
       gl::count_draw();
       passes.push_back("level1");
@@ -468,13 +430,13 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       SizeMeshes& m = meshes_for(n, band_w_);
       band_program_.use();
       scene_.bind_common(band_program_, camera);
-      glBindTextureUnit(2, beta_tex_);
+      glBindTextureUnit(2, beta_tex_.id());
       band_program_.set("u_beta_template", 2);
       band_program_.set("u_level1_center", centre);
       band_program_.set("u_grown_half", 0.5f * float(n - 1) + float(band_w_));
       band_program_.set("u_origin", origin_);
       band_program_.set("u_origin_rel", rel(origin_));
-      glBindVertexArray(m.ring_vao);
+      glBindVertexArray(m.ring_vao.id());
       glDrawElements(GL_TRIANGLES, m.ring_indices, GL_UNSIGNED_INT, nullptr);
       gl::count_draw();
       glDisable(GL_SCISSOR_TEST);
@@ -492,8 +454,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       glBindTextureUnit(3, band_target_->color_texture());
       glBindTextureUnit(4, band_target_->depth_texture());
     }
-    glBindTextureUnit(2, beta_tex_);
-    glBindVertexArray(level0_vao_);
+    glBindTextureUnit(2, beta_tex_.id());
+    glBindVertexArray(level0_vao_.id());
     for (auto* program : {&level0_program_, &level0_clipped_program_}) {
       const lod::IndexRuns& runs = level0_runs_[program == &level0_program_ ? 0 : 1];
       if (!runs.count.empty() && !skipped("level0")) {
@@ -532,19 +494,19 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     begin_pass("count");
     constexpr int kStep = 4;
     const int cw = (target.width() + kStep - 1) / kStep, ch = (target.height() + kStep - 1) / kStep;
-    glBindFramebuffer(GL_FRAMEBUFFER, count_fbo_);
-    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, cw);
-    glNamedFramebufferParameteri(count_fbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, ch);
+    glBindFramebuffer(GL_FRAMEBUFFER, count_fbo_.id());
+    glNamedFramebufferParameteri(count_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, cw);
+    glNamedFramebufferParameteri(count_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, ch);
     glViewport(0, 0, cw, ch);
     glDisable(GL_DEPTH_TEST);
     count_program_.use();
     glBindTextureUnit(5, target.color_texture());
     count_program_.set("u_color", 5);
     count_program_.set("u_step", kStep);
-    glBindVertexArray(empty_vao_);
+    glBindVertexArray(empty_vao_.id());
     for (int k = 0; k < (skipped("count") ? 0 : 2); ++k) {
       count_program_.set("u_threshold", k == 0 ? 0.75f : 0.25f);
-      glBeginQuery(GL_SAMPLES_PASSED, queries_[parity_][k]);
+      glBeginQuery(GL_SAMPLES_PASSED, queries_[parity_][k].id());
       glDrawArrays(GL_TRIANGLES, 0, 3);
       gl::count_draw();
       glEndQuery(GL_SAMPLES_PASSED);

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "lod/level0_clusters.h"
 #include "lod/level0_height_query.h"
@@ -100,7 +101,8 @@ class TwoLevelMethod final : public TerrainMethod {
   std::vector<glm::dvec3> prediction_rays_;
   lod::Level0Mesh level0_;
   lod::Level0HeightQuery level0_heights_;
-  GLuint level0_vao_ = 0, level0_vbo_ = 0, level0_ibo_ = 0;
+  gl::VertexArray level0_vao_;
+  gl::Buffer level0_vbo_, level0_ibo_;
   // Level0's static buffer as culled clusters; this frame's runs of it:
   // [0] wholly outside the Level1 square, [1] across its edge.
   std::unique_ptr<lod::Level0Clusters> level0_clusters_;
@@ -129,10 +131,11 @@ class TwoLevelMethod final : public TerrainMethod {
 
   // Band target (RGBA16F + depth), beta template, coverage queries.
   std::unique_ptr<gl::RenderTarget> band_target_;
-  GLuint beta_tex_ = 0;
+  gl::Texture beta_tex_;
   std::pair<int, int> beta_for_{0, 0};
-  GLuint count_fbo_ = 0, empty_vao_ = 0;
-  GLuint queries_[2][2] = {};  // [frame parity][level1, terrain]
+  gl::Framebuffer count_fbo_;
+  gl::VertexArray empty_vao_;
+  gl::Query queries_[2][2];  // [frame parity][level1, terrain] samples passed
   bool query_pending_[2] = {false, false};
   int parity_ = 0;
   double level0_resolution_ = 0.0;  // r0 = Level0 vertices / DEM samples
