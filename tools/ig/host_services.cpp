@@ -184,7 +184,7 @@ NativeAnswer HostServices::answer(const NativeQuery& q) {
   const auto a = to_local(q.a);
   if (!a || !query_.inside(a->x, a->y)) return out;
   if (q.kind == NativeQueryKind::Height) {
-    const auto s = query_.surface_at(a->x, a->y);
+    const auto s = surface_for_hot(a->x, a->y);
     const auto p = back(glm::dvec3(a->x, a->y, s->height_m));
     if (!p) return out;
     out.valid = true;
@@ -216,6 +216,21 @@ NativeAnswer HostServices::answer(const NativeQuery& q) {
   return out;
 }
 
+std::optional<terrain::SurfacePoint> HostServices::surface_for_hot(double x_m, double y_m) const {
+  auto s = query_.surface_at(x_m, y_m);
+  if (!s || !drawn_height_) return s;
+  const auto h = drawn_height_(x_m, y_m);
+  if (!h) return s;  // full resolution drawn there
+  // The drawn (Level0) triangle's slope from its heights half a metre around.
+  const double e = 0.5;
+  const auto hx0 = drawn_height_(x_m - e, y_m), hx1 = drawn_height_(x_m + e, y_m);
+  const auto hy0 = drawn_height_(x_m, y_m - e), hy1 = drawn_height_(x_m, y_m + e);
+  if (hx0 && hx1 && hy0 && hy1)
+    s->normal = glm::normalize(glm::dvec3(-(*hx1 - *hx0) / (2 * e), -(*hy1 - *hy0) / (2 * e), 1.0));
+  s->height_m = *h;
+  return s;
+}
+
 std::optional<glm::dvec3> HostServices::place(const glm::dvec3& p, CigiCoords c, std::uint16_t entity,
                                                const io::Pose& ownship) {
   if (c == CigiCoords::Geodetic) return to_local_ ? to_local_(p.x, p.y, p.z) : std::nullopt;
@@ -231,7 +246,7 @@ HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& own
   out.type = r.type;
   out.host_frame = host_frame_;
   const auto p = place(r.point, r.coords, r.entity, ownship);
-  const auto s = p ? query_.surface_at(p->x, p->y) : std::nullopt;
+  const auto s = p ? surface_for_hot(p->x, p->y) : std::nullopt;
   if (!s) return out;  // outside the terrain (or an unknown entity): valid clear
   out.valid = true;
   out.hot_m = s->height_m;

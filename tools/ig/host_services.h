@@ -52,6 +52,12 @@ class HostServices {
                LocalToGeodetic to_geodetic, HostServicesOptions options = {},
                const terrain::HeightPyramid* pyramid = nullptr);
 
+  // "As drawn" HAT/HOT: where this returns a height (Level0 is drawn there,
+  // app/drawn_surface.h), answer from it instead of the full-resolution
+  // surface. Unset: full resolution everywhere (the default).
+  using DrawnHeight = std::function<std::optional<double>(double x_m, double y_m)>;
+  void set_drawn_height(DrawnHeight f) { drawn_height_ = std::move(f); }
+
   // Every datagram from the CIGI host: its requests are queued.
   void take(std::span<const std::uint8_t> datagram);
 
@@ -108,10 +114,13 @@ class HostServices {
   void fill_hit(io::wire::LosResponse& out, const std::optional<terrain::LosHit>& hit, io::wire::CigiCoords coords,
                 const io::Pose& ownship);
   static int kind(const io::wire::CigiRequest& r) { return int(r.index()); }
+  // The surface a HAT/HOT is answered from (full resolution, or as drawn).
+  std::optional<terrain::SurfacePoint> surface_for_hot(double x_m, double y_m) const;
 
   terrain::TerrainQuery query_;
   io::GeodeticToLocal to_local_;
   LocalToGeodetic to_geodetic_;
+  DrawnHeight drawn_height_;
   HostServicesOptions options_;
   std::deque<Pending> queue_;
   std::map<std::pair<int, std::uint16_t>, Periodic> periodic_;  // (request kind, id)

@@ -22,6 +22,7 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "drawn_surface.h"
 #include "host_services.h"
 #include "io/host_view_control.h"
 #include "io/net/udp_socket.h"
@@ -47,6 +48,7 @@ constexpr const char* kUsage =
     "                [--fgfdm ADDR:PORT] [--multicast GROUP] [--channel NAME] [--headless | --window]\n"
     "                [--out DIR] [--frames N | --seconds S] [--rate HZ] [--record FILE]\n"
     "                [--size WxH] [--method NAME] [--modbus ADDR:PORT] [--latency smooth|latest|sync] [--quiet]\n"
+    "                [--host-surface full|drawn]\n"
     "                [--can IFNAME [--can-altitude 320|322|332] [--can-node N] [--can-max-age-ms MS]]\n"
     "  ADDR may be empty (':5500' = all interfaces); with --multicast GROUP every\n"
     "  source binds GROUP:PORT and joins the group on loopback.\n"
@@ -58,7 +60,8 @@ constexpr const char* kUsage =
     "  --cigi-reply: Start Of Frame every frame, with the answers to the host's HAT/HOT and\n"
     "  line-of-sight requests (docs/host-services.md). Native height / line-of-sight queries\n"
     "  on the --udp port are answered to their sender. CIGI View Control / View Definition\n"
-    "  set the channel's view offsets and vertical field of view.\n"
+    "  set the channel's view offsets and vertical field of view. --host-surface drawn: HAT/HOT\n"
+    "  from the surface as drawn (Level0 outside the two-level method's Level1), default full.\n"
     "  --can IFNAME: SocketCAN pose source, CANaerospace and the CAN FD pose (docs/can.md);\n"
     "  altitude from id 322 unless --can-altitude, any node unless --can-node, fields\n"
     "  older than --can-max-age-ms (100) are stale. A missing or down interface is retried.\n";
@@ -69,6 +72,7 @@ extern "C" void on_signal(int) { g_stop = true; }
 struct Args {
   std::string config;
   std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus, can, latency;
+  bool host_surface_drawn = false;
   int can_altitude = 322;
   std::optional<int> can_node;
   double can_max_age_ms = 100.0;
@@ -100,6 +104,11 @@ Args parse_args(const std::vector<std::string>& a) {
         throw UsageError("--latency: expected smooth, latest or sync, got '" + *args.latency + "'");
     }
     else if (f == "--modbus") args.modbus = r.value(f);
+    else if (f == "--host-surface") {
+      const std::string v = r.value(f);
+      if (v != "full" && v != "drawn") throw UsageError("--host-surface: expected full or drawn, got '" + v + "'");
+      args.host_surface_drawn = v == "drawn";
+    }
     else if (f == "--can") args.can = r.value(f);
     else if (f == "--can-altitude") args.can_altitude = r.can_altitude_id(f);
     else if (f == "--can-node") args.can_node = r.can_node(f);
@@ -214,6 +223,9 @@ int run_serve_command(const std::vector<std::string>& argv) {
                                                 geodetic_placer(runner.heightfield()),
                                                 local_to_geodetic(runner.heightfield()), HostServicesOptions{},
                                                 &runner.scene().height_pyramid());
+    DrawnSurface drawn(runner);
+    if (services && args.host_surface_drawn)
+      services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
 #ifdef IG_WITH_MODBUS
     std::unique_ptr<ModbusLink> modbus;
     if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, latency, args.quiet);
