@@ -61,7 +61,7 @@ struct IgControls {
   bool wireframe = false;
   float a1 = 0.50f, a2 = 0.80f;     // Level1 thresholds, 0 < a1 < a2 < 1
   float alpha = 2000.0f;             // band factor, > 0 (method rebuilt when written)
-  std::uint32_t level0_budget = 2048;  // Level0 triangles (method rebuilt when written)
+  std::uint32_t level0_budget = 32768;  // Level0 triangles (method rebuilt when written)
   float fog_visibility_m = 60000.0f;   // >= 0, 0 = no fog
   bool capture = false;                // capture-next-frame trigger
   std::uint16_t latency_mode = 0;      // 0 smooth, 1 latest, 2 CIGI synchronous (io::LatencyMode)

@@ -36,8 +36,9 @@ read_hold_f32() { mb -t 4:float -B -r "$1" -c 1 -1 2>&1 | sed -n "s/^\[$1\]:[[:s
 
 # The default scenario with the two-level eye guard off: the guard keeps
 # Level1 over a low eye whatever a1/a2 say, and step 2 checks that the written
-# thresholds reach the size controller.
-python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); s["render"].setdefault("twolevel", {})["eye_guard"]=False; json.dump(s, open(sys.argv[2], "w"))' \
+# thresholds reach the size controller. Level0 starts at 2048 triangles so
+# step 4b's write of 8192 is a visible rebuild.
+python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); t=s["render"].setdefault("twolevel", {}); t["eye_guard"]=False; t["level0_budget"]=2048; json.dump(s, open(sys.argv[2], "w"))' \
   "$src/scenarios/default.json" "$out/config.json"
 "$bin/ig" serve --config "$out/config.json" --headless --udp "127.0.0.1:$udp" \
   --modbus "127.0.0.1:$port" --seconds 16 --size 160x120 --out "$out/serve" > "$out/serve.log" 2>&1 &

@@ -496,7 +496,7 @@ TEST(MetresPerAngle, KnownValues) {
 
 // -------------------------------------------------------- bad files ---
 
-TEST_F(DemLoaderTest, MissingEmptyAndDirectory) {
+TEST_F(DemLoaderTest, MissingEmptyAndFolders) {
   expect_dem_error(path("nope.tif"), "no such file");
   const std::string empty = path("empty.tif");
   write_bytes(empty, "");
@@ -504,9 +504,19 @@ TEST_F(DemLoaderTest, MissingEmptyAndDirectory) {
   const std::string empty_png = path("empty.png");
   write_bytes(empty_png, "");
   expect_dem_error(empty_png, "empty file (0 bytes)");
+  // A folder is read as a mosaic of its tiles (dem_mosaic_test.cpp): an
+  // empty one has none, this one has an unreadable tile.
   fs::create_directories(path("adir.tif"));
-  expect_dem_error(path("adir.tif"), "is a directory");
-  expect_dem_error(dir_.string(), "is a directory");
+  expect_dem_error(path("adir.tif"), "no DEM tiles in the folder");
+  const std::string message = [&] {
+    try {
+      ig::terrain::load_dem(dir_.string());
+    } catch (const ig::terrain::DemError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  }();
+  EXPECT_NE(message.find("empty.tif: tile cannot be read"), std::string::npos) << message;
 }
 
 TEST_F(DemLoaderTest, NotARaster) {

@@ -450,7 +450,7 @@ std::string with_twolevel(const std::string& body) {
 TEST(ScenarioTwoLevel, DefaultsAreThePapers) {
   const auto s = ig::io::parse_scenario(with_twolevel("{}"));
   EXPECT_EQ(s.render.method, "twolevel");
-  EXPECT_EQ(s.render.twolevel.level0_budget, 2048);
+  EXPECT_EQ(s.render.twolevel.level0_budget, 32768);
   EXPECT_DOUBLE_EQ(s.render.twolevel.a1, 0.5);
   EXPECT_DOUBLE_EQ(s.render.twolevel.a2, 0.8);
 }

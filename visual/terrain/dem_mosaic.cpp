@@ -164,8 +164,8 @@ DemMosaic::DemMosaic(const std::string& folder) {
     sources_for_vrt_.push_back(source);
   }
   if (tiles_.empty())
-    throw DemError(folder, "no DEM tiles in the folder (looked for " + std::to_string(files.size()) +
-                               " files with a DEM extension such as .tif, .hgt, .asc, .vrt)");
+    throw DemError(folder, "no DEM tiles in the folder (" + std::to_string(files.size()) +
+                               " files, none with a DEM extension such as .tif, .hgt, .asc, .vrt)");
 
   // The mosaic: the finest resolution of any tile, bilinear where a tile is
   // coarser, -32768 (the SRTM void) where no tile covers.
