@@ -1,0 +1,21 @@
+# find_package(ig CONFIG): the IG's libraries (ig::ig_terrain, ig::ig_io,
+# ig::ig_visual) and the Debian packages they link (docs/architecture.md).
+include(CMakeFindDependencyMacro)
+find_dependency(Threads)
+find_dependency(glm CONFIG)
+find_dependency(nlohmann_json 3 CONFIG)
+find_dependency(GDAL CONFIG)
+find_dependency(glfw3 3.3 CONFIG)
+find_dependency(ZLIB)
+find_dependency(PkgConfig)
+# The same imported targets the build used (static libraries carry them).
+if(NOT TARGET PkgConfig::EPOXY)
+  pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+endif()
+if(NOT TARGET PkgConfig::EGL)
+  pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
+endif()
+if(NOT TARGET PkgConfig::OIIO)
+  pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+endif()
+include(${CMAKE_CURRENT_LIST_DIR}/igTargets.cmake)
