@@ -7,7 +7,10 @@
 //       [--stepping] [--no-eye-guard]
 //
 // R is the visible-pixel ratio the controller uses (Level1 pixels / terrain
-// pixels of the finished frame, occlusion queries). "settle" is the frames
+// pixels of the finished frame, occlusion queries); R_area the paper's
+// projected-area ratio: the screen area of Level1's square over that of the
+// whole DEM, each a flat polygon at its mean height, hidden parts included
+// (lod/projected_area.h). "settle" is the frames
 // after the view change until the size stopped changing. --stepping: the paper's one-step rule instead of the
 // predicted sizes; --no-eye-guard: the controller alone decides.
 //
@@ -20,6 +23,7 @@
 #include <vector>
 
 #include "ig/scenario_runner.h"
+#include "lod/projected_area.h"
 #include "render/twolevel_method.h"
 #include "stats/frame_log.h"
 
@@ -28,13 +32,36 @@ namespace {
 struct Row {
   double pitch;
   int size = 0, next_size = 0;
-  double ratio = 0, level0 = 0, level1 = 0, band = 0;
+  double ratio = 0, area_ratio = 0, level0 = 0, level1 = 0, band = 0;
   int settle_frames = 0;
   long long triangles = 0;
   double twolevel_ms = 0, reference_ms = 0;
   long long reference_triangles = 0;
   std::string passes;
 };
+
+// The paper's projected-area ratio for the last frame: Level1's square and
+// the whole DEM as flat polygons at their mean heights, seen by the channel.
+double projected_area_ratio(ig::app::ScenarioRunner& runner, const ig::render::TwoLevelMethod& tl) {
+  const auto& ch = runner.channels()[0];
+  const auto camera = runner.scene().local_camera(ch.camera);
+  const auto& hf = runner.heightfield();
+  const glm::dmat4 vp(camera.view_projection());
+  const int w = ch.target->width(), h = ch.target->height();
+  auto flat = [&](double i0, double j0, double i1, double j1, double z) {
+    std::vector<glm::dvec3> c;
+    for (auto [i, j] : {std::pair{i0, j0}, {i1, j0}, {i1, j1}, {i0, j1}})
+      c.push_back(glm::dvec3(i * hf.spacing_x_m, j * hf.spacing_y_m, z) - camera.position);
+    return ig::lod::projected_area_px(vp, c, w, h);
+  };
+  const glm::ivec2 o = tl.level1_origin();
+  const int n = tl.level1_size() - 1;
+  double z1 = 0.0;
+  for (auto [i, j] : {std::pair{0, 0}, {n, 0}, {0, n}, {n, n}, {n / 2, n / 2}}) z1 += hf.at_clamped(o.x + i, o.y + j) / 5.0;
+  const double level1 = flat(o.x, o.y, o.x + n, o.y + n, z1);
+  const double dem = flat(0, 0, hf.width - 1, hf.height - 1, hf.mean_m);
+  return dem > 0 ? std::min(1.0, level1 / dem) : 0.0;
+}
 
 double arg_double(int argc, char** argv, const std::string& flag, double fallback) {
   for (int k = 1; k + 1 < argc; ++k)
@@ -120,6 +147,7 @@ int main(int argc, char** argv) {
           }
         }
         r.ratio = ratio_sum / frames;
+        r.area_ratio = projected_area_ratio(runner, *tl);
         r.twolevel_ms = ig::stats::percentiles(ms).median;
         runner.render_frame(int(k));
         r.next_size = tl->level1_size();
@@ -149,11 +177,11 @@ int main(int argc, char** argv) {
               "sizes %s, eye guard %s\n\n",
               width, height, fov, lat, lon, heading, settle, frames, stepping ? "stepped (paper)" : "predicted",
               no_guard ? "off" : "on");
-  std::printf("| pitch below horizon | Level1 N | settle frames | R | triangles (L0 + L1 + band) | two-level ms (fps) | next N | reference ms | reference triangles | speed-up |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| pitch below horizon | Level1 N | settle frames | R (visible) | R_area (projected) | triangles (L0 + L1 + band) | two-level ms (fps) | next N | reference ms | reference triangles | speed-up |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows)
-    std::printf("| %.0f deg | %d | %d | %.0f %% | %lld (%.0f + %.0f + %.0f) | %.1f (%.0f) | %d | %.1f | %lld | %.1fx |\n",
-                r.pitch, r.size, r.settle_frames, 100.0 * r.ratio, r.triangles, r.level0,
+    std::printf("| %.0f deg | %d | %d | %.0f %% | %.0f %% | %lld (%.0f + %.0f + %.0f) | %.1f (%.0f) | %d | %.1f | %lld | %.1fx |\n",
+                r.pitch, r.size, r.settle_frames, 100.0 * r.ratio, 100.0 * r.area_ratio, r.triangles, r.level0,
                 r.level1, r.band, r.twolevel_ms, 1000.0 / r.twolevel_ms, r.next_size, r.reference_ms,
                 r.reference_triangles, r.reference_ms > 0 ? r.reference_ms / r.twolevel_ms : 0.0);
   return 0;
