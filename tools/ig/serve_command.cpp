@@ -209,14 +209,14 @@ int run_serve_command(const std::vector<std::string>& argv) {
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
                    "packets (CIGI, FlightGear, native geodetic) are counted as rejected\n";
     const io::Pose initial = runner.pose_at(0.0);
-    // Host services answer CIGI hosts on the reply port and native queries
-    // to their sender, from the terrain as drawn (sharing the scene's
-    // min/max pyramid).
     // CIGI View Control / View Definition set the channel as a config would.
     io::HostViewControl views;
     const io::HostViewControl::ChannelLookup channel_spec = [&runner](std::uint16_t view) -> io::ChannelSpec* {
       return view < runner.channels().size() ? &runner.channels()[view].spec : nullptr;
     };
+    // Host services answer CIGI hosts on the reply port and native queries
+    // to their sender, from the terrain as drawn (sharing the scene's
+    // min/max pyramid).
     std::unique_ptr<HostServices> services;
     if (cigi_reply || args.udp)
       services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
@@ -268,7 +268,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
             if (recorder) recorder->write(src.protocol, d, t);
             feed.intake().handle(src.protocol, d, t);
             if (src.protocol == io::Protocol::Cigi) {
-              if (services) services->take(d);
+              if (services && cigi_reply) services->take(d);  // answered only with somewhere to send them
               views.take(d, channel_spec);
             }
           },
@@ -366,8 +366,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
         last_sof = io::wire::encode_cigi_start_of_frame(
             std::uint32_t(k), feed.intake().last_host_frame().value_or(0),
             std::uint32_t(std::llround((frame_start - start) * 1e5)), io::wire::kCigiModeOperate, false);
-        if (services) cigi_reply->send(services->frame_datagram(*last_sof, pose));
-        else cigi_reply->send(*last_sof);
+        cigi_reply->send(services->frame_datagram(*last_sof, pose));  // with this frame's answers
       } else if (services) {
         services->answer_frame(pose);  // the frame ends: a new native budget
       }
