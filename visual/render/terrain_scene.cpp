@@ -1,13 +1,12 @@
 #include "render/terrain_scene.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
 #include "gl/gl_context.h"
+#include "terrain/imagery_loader.h"
 
 namespace ig::render {
 
@@ -37,25 +36,24 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
   if (imagery_path) {
-    auto in = OIIO::ImageInput::open(*imagery_path);
-    if (!in) throw gl::GlError(*imagery_path + ": cannot open imagery: " + OIIO::geterror());
-    const auto& spec = in->spec();
-    std::vector<unsigned char> rgb(size_t(spec.width) * spec.height * 3);
-    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, rgb.data()))
-      throw gl::GlError(*imagery_path + ": cannot read imagery: " + in->geterror());
-    // Image rows run north first; the DEM's texture rows run south first.
-    std::vector<unsigned char> flipped(rgb.size());
-    const size_t row = size_t(spec.width) * 3;
-    for (int y = 0; y < spec.height; ++y)
-      std::copy_n(rgb.begin() + y * row, row, flipped.begin() + (spec.height - 1 - y) * row);
+    // Georeferenced imagery is warped onto the DEM's footprint (terrain/imagery_loader.h).
+    terrain::Imagery img;
+    try {
+      img = terrain::load_imagery(hf, *imagery_path, max_size);
+    } catch (const std::exception& e) {
+      throw gl::GlError(e.what());
+    }
     imagery_tex_ = gl::create_texture(GL_TEXTURE_2D);
-    const int levels = 1 + int(std::floor(std::log2(std::max(spec.width, spec.height))));
-    glTextureStorage2D(imagery_tex_.id(), levels, GL_RGB8, spec.width, spec.height);
+    const int levels = 1 + int(std::floor(std::log2(std::max(img.width, img.height))));
+    glTextureStorage2D(imagery_tex_.id(), levels, GL_RGB8, img.width, img.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(imagery_tex_.id(), 0, 0, 0, spec.width, spec.height, GL_RGB, GL_UNSIGNED_BYTE, flipped.data());
+    glTextureSubImage2D(imagery_tex_.id(), 0, 0, 0, img.width, img.height, GL_RGB, GL_UNSIGNED_BYTE, img.rgb.data());
     glGenerateTextureMipmap(imagery_tex_.id());
     glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    imagery_uncovered_ = img.uncovered;
   }
 }
 

@@ -19,6 +19,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -57,6 +58,8 @@ class TerrainScene {
   GLuint height_texture() const { return height_tex_.id(); }
   bool has_imagery() const { return bool(imagery_tex_); }
   double upload_ms() const { return upload_ms_; }
+  // Imagery texels of the DEM's footprint the image did not cover (grey).
+  std::int64_t imagery_uncovered() const { return imagery_uncovered_; }
   // The min/max pyramid of the heightfield (ray casts, culling bounds),
   // built on first use and shared by every method and channel on this scene:
   // it is view-independent and large (180 MB for a 4097^2 DEM).
@@ -84,6 +87,7 @@ class TerrainScene {
   gl::Texture height_tex_;
   gl::Texture imagery_tex_;  // empty without imagery
   double upload_ms_ = 0.0;
+  std::int64_t imagery_uncovered_ = 0;
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   glm::dvec3 world_origin_{0.0};
   double earth_radius_m_ = 0.0;
