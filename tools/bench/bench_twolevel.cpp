@@ -8,14 +8,15 @@
 //
 // R is the visible-pixel ratio the controller uses (Level1 pixels / terrain
 // pixels of the finished frame, occlusion queries); R_area the paper's
-// projected-area ratio: the screen area of Level1's square over that of the
-// whole DEM, each a flat polygon at its mean height, hidden parts included
-// (lod/projected_area.h). "settle" is the frames
+// projected-area ratio: the summed screen area of Level1's triangles over
+// that of both levels' drawn triangles, each clipped to the view, hidden and
+// overlapping parts included (lod/projected_area.h; no Earth curvature). "settle" is the frames
 // after the view change until the size stopped changing. --stepping: the paper's one-step rule instead of the
 // predicted sizes; --no-eye-guard: the controller alone decides.
 //
 // Defaults: 1280x1024, FOV 15 deg (the paper's), a point in the Sierra
 // Nevada DEM's interior (37.70 N, 118.70 W), heading 270 (west, into the range).
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,27 +41,52 @@ struct Row {
   std::string passes;
 };
 
-// The paper's projected-area ratio for the last frame: Level1's square and
-// the whole DEM as flat polygons at their mean heights, seen by the channel.
+// The paper's projected-area ratio for the last frame: the screen areas of
+// the two levels' triangles (Level1's grid, Level0's triangles outside the
+// square), each clipped to the view, summed with hidden parts included.
 double projected_area_ratio(ig::app::ScenarioRunner& runner, const ig::render::TwoLevelMethod& tl) {
   const auto& ch = runner.channels()[0];
   const auto camera = runner.scene().local_camera(ch.camera);
   const auto& hf = runner.heightfield();
   const glm::dmat4 vp(camera.view_projection());
   const int w = ch.target->width(), h = ch.target->height();
-  auto flat = [&](double i0, double j0, double i1, double j1, double z) {
-    std::vector<glm::dvec3> c;
-    for (auto [i, j] : {std::pair{i0, j0}, {i1, j0}, {i1, j1}, {i0, j1}})
-      c.push_back(glm::dvec3(i * hf.spacing_x_m, j * hf.spacing_y_m, z) - camera.position);
-    return ig::lod::projected_area_px(vp, c, w, h);
+  auto sample = [&](int i, int j) {
+    return glm::dvec3(i * hf.spacing_x_m, j * hf.spacing_y_m, hf.at_clamped(i, j)) - camera.position;
+  };
+  auto area = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    return ig::lod::projected_area_px(vp, {a, b, c}, w, h);
   };
   const glm::ivec2 o = tl.level1_origin();
   const int n = tl.level1_size() - 1;
-  double z1 = 0.0;
-  for (auto [i, j] : {std::pair{0, 0}, {n, 0}, {0, n}, {n, n}, {n / 2, n / 2}}) z1 += hf.at_clamped(o.x + i, o.y + j) / 5.0;
-  const double level1 = flat(o.x, o.y, o.x + n, o.y + n, z1);
-  const double dem = flat(0, 0, hf.width - 1, hf.height - 1, hf.mean_m);
-  return dem > 0 ? std::min(1.0, level1 / dem) : 0.0;
+  double level1 = 0.0, level0 = 0.0;
+  for (int j = o.y; j < o.y + n; ++j)
+    for (int i = o.x; i < o.x + n; ++i)
+      level1 += area(sample(i, j), sample(i + 1, j), sample(i + 1, j + 1)) +
+                area(sample(i, j), sample(i + 1, j + 1), sample(i, j + 1));
+  // Level0 as drawn: each triangle minus its part inside the square (the
+  // triangle clipped by the square's four vertical planes, on its own plane).
+  const glm::dvec3 lo = sample(o.x, o.y), hi = sample(o.x + n, o.y + n);
+  const std::array<glm::dvec4, 4> sides = {glm::dvec4(1, 0, 0, -lo.x), glm::dvec4(-1, 0, 0, hi.x),
+                                          glm::dvec4(0, 1, 0, -lo.y), glm::dvec4(0, -1, 0, hi.y)};
+  const auto& m = tl.level0();
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    std::vector<glm::dvec3> tri;
+    for (int k = 0; k < 3; ++k) tri.push_back(sample(m.samples[m.indices[t + k]].x, m.samples[m.indices[t + k]].y));
+    std::vector<glm::dvec3> inside = tri;
+    for (const auto& plane : sides) {
+      std::vector<glm::dvec3> next;
+      for (size_t k = 0; k < inside.size(); ++k) {
+        const glm::dvec3 &a = inside[k], &b = inside[(k + 1) % inside.size()];
+        const double da = glm::dot(glm::dvec3(plane), a) + plane.w, db = glm::dot(glm::dvec3(plane), b) + plane.w;
+        if (da >= 0) next.push_back(a);
+        if ((da >= 0) != (db >= 0)) next.push_back(a + (b - a) * (da / (da - db)));
+      }
+      inside = next;
+    }
+    level0 += area(tri[0], tri[1], tri[2]);
+    if (inside.size() >= 3) level0 -= ig::lod::projected_area_px(vp, inside, w, h);
+  }
+  return level1 + level0 > 0 ? level1 / (level1 + level0) : 0.0;
 }
 
 double arg_double(int argc, char** argv, const std::string& flag, double fallback) {
