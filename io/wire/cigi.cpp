@@ -3,21 +3,13 @@
 #include <cmath>
 
 #include "io/wire/byte_io.h"
+#include "io/wire/cigi_byte_order.h"
 
 namespace ig::io::wire {
 
 using bytes::Order;
 
 namespace {
-
-Order out_order(bool swap) { return swap ? bytes::swapped(bytes::kHostOrder) : bytes::kHostOrder; }
-
-// Byte order of a sender from the two magic bytes, or nullopt.
-std::optional<Order> order_from_magic(const std::uint8_t* m) {
-  if (m[0] == 0x80 && m[1] == 0x00) return Order::Big;
-  if (m[0] == 0x00 && m[1] == 0x80) return Order::Little;
-  return std::nullopt;
-}
 
 std::uint32_t timestamp_10us(double seconds) {
   if (!std::isfinite(seconds)) return 0;
@@ -36,7 +28,7 @@ constexpr std::uint8_t kEntityAttached = 1u << 2;
 
 std::vector<std::uint8_t> encode_cigi_host_datagram(std::uint32_t host_frame, std::uint32_t ig_mode,
                                                     const PoseMessage& pose, bool swap) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   std::vector<std::uint8_t> b(kCigiIgControlSize + kCigiEntityControlSize, 0);
   std::uint8_t* ig = b.data();
   ig[0] = kCigiOpIgControl;
@@ -91,7 +83,7 @@ DecodeResult decode_cigi_host_datagram(std::span<const std::uint8_t> data) {
     r.reject = Reject::BadVersion;
     return r;
   }
-  const std::optional<Order> order = order_from_magic(p + 6);
+  const std::optional<Order> order = cigi_order_from_magic(p + 6);
   if (!order) {
     r.reject = Reject::BadMagic;
     return r;
@@ -156,7 +148,7 @@ DecodeResult decode_cigi_host_datagram(std::span<const std::uint8_t> data) {
 std::array<std::uint8_t, kCigiStartOfFrameSize> encode_cigi_start_of_frame(
     std::uint32_t ig_frame, std::uint32_t last_host_frame, std::uint32_t timestamp_10us_value,
     std::uint32_t ig_mode, bool swap, std::uint8_t ig_status) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiStartOfFrameSize> b{};
   std::uint8_t* p = b.data();
   p[0] = kCigiOpStartOfFrame;
@@ -195,7 +187,7 @@ StartOfFrameResult decode_cigi_start_of_frame(std::span<const std::uint8_t> data
     r.reject = Reject::BadVersion;
     return r;
   }
-  const std::optional<Order> order = order_from_magic(p + 6);
+  const std::optional<Order> order = cigi_order_from_magic(p + 6);
   if (!order) {
     r.reject = Reject::BadMagic;
     return r;

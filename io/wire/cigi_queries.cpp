@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "io/wire/byte_io.h"
+#include "io/wire/cigi_byte_order.h"
 #include "io/wire/cigi.h"
 
 namespace ig::io::wire {
@@ -11,14 +12,6 @@ namespace ig::io::wire {
 using bytes::Order;
 
 namespace {
-
-Order out_order(bool swap) { return swap ? bytes::swapped(bytes::kHostOrder) : bytes::kHostOrder; }
-
-std::optional<Order> order_from_magic(const std::uint8_t* m) {
-  if (m[0] == 0x80 && m[1] == 0x00) return Order::Big;
-  if (m[0] == 0x00 && m[1] == 0x80) return Order::Little;
-  return std::nullopt;
-}
 
 // Offsets from an entity, metres: anything within 10 000 km.
 constexpr double kMaxOffsetM = 1e7;
@@ -160,10 +153,7 @@ CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const Cigi
   const std::size_t n = data.size();
   const std::uint8_t* p = data.data();
   // The datagram's framing, as decode_cigi_host_datagram checks it.
-  if (n < kCigiIgControlSize || n > kCigiMaxDatagram || p[0] != kCigiOpIgControl || p[1] != kCigiIgControlSize ||
-      p[2] != kCigiMajorVersion)
-    return out;
-  const std::optional<Order> order = order_from_magic(p + 6);
+  const std::optional<Order> order = cigi_host_datagram_order(data);
   if (!order) return out;
   const Order o = *order;
   out.byte_swapped = o != bytes::kHostOrder;
@@ -203,7 +193,7 @@ CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const Cigi
 }
 
 std::array<std::uint8_t, kCigiHatHotRequestSize> encode_cigi_hat_hot_request(const HatHotRequest& r, bool swap) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiHatHotRequestSize> b{};
   header(b.data(), kCigiOpHatHotRequest, b.size(), r.id, o);
   b[4] = static_cast<std::uint8_t>((std::uint8_t(r.type) & 0x3u) | (std::uint8_t(r.coords) << 2));
@@ -215,7 +205,7 @@ std::array<std::uint8_t, kCigiHatHotRequestSize> encode_cigi_hat_hot_request(con
 
 std::array<std::uint8_t, kCigiLosSegmentRequestSize> encode_cigi_los_segment_request(const LosSegmentRequest& r,
                                                                                      bool swap) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiLosSegmentRequestSize> b{};
   header(b.data(), kCigiOpLosSegmentRequest, b.size(), r.id, o);
   b[4] = static_cast<std::uint8_t>(std::uint8_t(r.extended) | (std::uint8_t(r.source_coords) << 1) |
@@ -234,7 +224,7 @@ std::array<std::uint8_t, kCigiLosSegmentRequestSize> encode_cigi_los_segment_req
 
 std::array<std::uint8_t, kCigiLosVectorRequestSize> encode_cigi_los_vector_request(const LosVectorRequest& r,
                                                                                    bool swap) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiLosVectorRequestSize> b{};
   header(b.data(), kCigiOpLosVectorRequest, b.size(), r.id, o);
   b[4] = static_cast<std::uint8_t>(std::uint8_t(r.extended) | (std::uint8_t(r.source_coords) << 1) |
@@ -258,7 +248,7 @@ std::size_t cigi_response_size(const CigiResponse& r) {
 }
 
 void append_cigi_response(const CigiResponse& resp, bool swap, std::vector<std::uint8_t>& out) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   const std::size_t at = out.size(), size = cigi_response_size(resp);
   out.resize(at + size, 0);
   std::uint8_t* p = out.data() + at;

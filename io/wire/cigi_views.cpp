@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/wire/byte_io.h"
+#include "io/wire/cigi_byte_order.h"
 #include "io/wire/cigi.h"
 
 namespace ig::io::wire {
@@ -10,14 +11,6 @@ namespace ig::io::wire {
 using bytes::Order;
 
 namespace {
-
-Order out_order(bool swap) { return swap ? bytes::swapped(bytes::kHostOrder) : bytes::kHostOrder; }
-
-std::optional<Order> order_from_magic(const std::uint8_t* m) {
-  if (m[0] == 0x80 && m[1] == 0x00) return Order::Big;
-  if (m[0] == 0x00 && m[1] == 0x80) return Order::Little;
-  return std::nullopt;
-}
 
 // Six f32 at [8], each present when its enable bit is set.
 void load_six(const std::uint8_t* p, Order o, std::uint8_t enabled, std::array<std::optional<float>*, 6> out) {
@@ -63,10 +56,8 @@ CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
   CigiViewPackets out;
   const std::size_t n = data.size();
   const std::uint8_t* p = data.data();
-  if (n < kCigiIgControlSize || n > kCigiMaxDatagram || p[0] != kCigiOpIgControl || p[1] != kCigiIgControlSize ||
-      p[2] != kCigiMajorVersion)
-    return out;
-  const std::optional<Order> order = order_from_magic(p + 6);
+  // The datagram's framing, as decode_cigi_host_datagram checks it.
+  const std::optional<Order> order = cigi_host_datagram_order(data);
   if (!order) return out;
   const Order o = *order;
   for (std::size_t off = kCigiIgControlSize; off < n;) {
@@ -108,7 +99,7 @@ CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
 }
 
 std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const CigiViewControl& v, bool swap) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiViewControlSize> b{};
   b[0] = kCigiOpViewControl;
   b[1] = std::uint8_t(b.size());
@@ -120,7 +111,7 @@ std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const Ci
 }
 
 std::array<std::uint8_t, kCigiViewDefinitionSize> encode_cigi_view_definition(const CigiViewDefinition& v, bool swap) {
-  const Order o = out_order(swap);
+  const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiViewDefinitionSize> b{};
   b[0] = kCigiOpViewDefinition;
   b[1] = std::uint8_t(b.size());
