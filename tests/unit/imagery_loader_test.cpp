@@ -75,8 +75,9 @@ std::string write_image(const std::string& name, int epsg, const double gt[6], i
       g[y * w + x] = std::uint8_t(std::clamp(c[1], 0.0, 255.0));
     }
   for (int k = 0; k < 3; ++k)
-    GDALRasterIO(GDALGetRasterBand(ds, k + 1), GF_Write, 0, 0, w, h, (k == 0 ? r : k == 1 ? g : b).data(), w, h,
-                 GDT_Byte, 0, 0);
+    EXPECT_EQ(GDALRasterIO(GDALGetRasterBand(ds, k + 1), GF_Write, 0, 0, w, h, (k == 0 ? r : k == 1 ? g : b).data(), w,
+                           h, GDT_Byte, 0, 0),
+              CE_None);
   OCTDestroyCoordinateTransformation(to_wgs);
   OSRDestroySpatialReference(srs);
   OSRDestroySpatialReference(wgs);
@@ -139,7 +140,7 @@ TEST(ImageryLoader, ImageElsewhereIsRefusedAndPlainImagesSpanTheDem) {
   const std::string plain = (fs::temp_directory_path() / "ig_imagery_plain.tif").string();
   GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), plain.c_str(), 4, 3, 1, GDT_Byte, nullptr);
   std::vector<std::uint8_t> grey = {0, 0, 0, 0, 50, 50, 50, 50, 200, 200, 200, 200};  // north row first
-  GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 4, 3, grey.data(), 4, 3, GDT_Byte, 0, 0);
+  ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 4, 3, grey.data(), 4, 3, GDT_Byte, 0, 0), CE_None);
   GDALClose(ds);
   const auto img = ig::terrain::load_imagery(hf, plain, 16384);
   EXPECT_FALSE(img.warped);

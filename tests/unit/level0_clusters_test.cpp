@@ -88,8 +88,11 @@ TEST(Level0Clusters, CullingKeepsEveryTriangleInTheVisibleRegionAndRunsAreMerged
   EXPECT_TRUE(crossing.first.empty());
   const auto boxes = triangle_boxes(mesh);
   const auto c = classes(outside, crossing, boxes.size());
-  for (size_t t = 0; t < boxes.size(); ++t)
-    if (boxes[t].hi.x <= 64) EXPECT_EQ(c[t], 0) << "visible triangle " << t << " culled";
+  for (size_t t = 0; t < boxes.size(); ++t) {
+    if (boxes[t].hi.x <= 64) {
+      EXPECT_EQ(c[t], 0) << "visible triangle " << t << " culled";
+    }
+  }
   // Contiguous clusters become one run: far fewer runs than clusters drawn.
   EXPECT_LT(outside.first.size(), size_t(clusters.cluster_count() - culled));
 }

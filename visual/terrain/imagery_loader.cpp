@@ -134,8 +134,9 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
   if (out.warped) {  // the destination alpha band says where the image covers the footprint
     const int bands = GDALGetRasterCount(ds);
     std::vector<std::uint8_t> alpha(std::size_t(out.width) * out.height);
-    GDALRasterIO(GDALGetRasterBand(ds, bands), GF_Read, 0, 0, out.width, out.height, alpha.data(), out.width,
-                 out.height, GDT_Byte, 0, 0);
+    if (GDALRasterIO(GDALGetRasterBand(ds, bands), GF_Read, 0, 0, out.width, out.height, alpha.data(), out.width,
+                     out.height, GDT_Byte, 0, 0) != CE_None)
+      throw DemError(path, "imagery coverage read failed: " + last_error("unknown GDAL error"));
     for (std::size_t p = 0; p < alpha.size(); ++p)
       if (alpha[p] == 0) {
         ++out.uncovered;
