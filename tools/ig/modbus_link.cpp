@@ -1,11 +1,11 @@
 // Compiled only with Modbus (IG_WITH_MODBUS); see modbus_link.h.
-#ifdef IG_WITH_MODBUS
 #include "modbus_link.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 
+#include "cli_args.h"
 #include "render/twolevel_method.h"
 
 namespace ig::app {
@@ -53,12 +53,13 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   }
   Applied a;
   a.capture = u.capture;
+  a.frozen = frozen_;
   if (u.latency) a.latency = io::LatencyMode(c.latency_mode);
   return a;
 }
 
 void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
-                         const io::control::IgStatus& can_part) {
+                         const ExtraSourceStatus& source) {
   namespace ctl = io::control;
   const double frame_us = (frame_end_s - frame_start_s) * 1e6;
   window_.push_back({frame_end_s, frame_us});
@@ -93,10 +94,10 @@ void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, P
   s.native = counts(io::Protocol::Native);
   s.cigi = counts(io::Protocol::Cigi);
   s.fgfdm = counts(io::Protocol::FgNetFdm);
-  s.can_link = can_part.can_link;
-  s.can_poses = can_part.can_poses;
-  s.can_rejected = can_part.can_rejected;
-  s.can_error_frames = can_part.can_error_frames;
+  s.can_link = source.link;
+  s.can_poses = source.poses;
+  s.can_rejected = source.rejected;
+  s.can_error_frames = source.error_frames;
   if (frozen_) flags |= ctl::kFlagFrozen;
   if (wireframe_) flags |= ctl::kFlagWireframe;
   if (received) flags |= ctl::kFlagPoseReceived;
@@ -114,5 +115,17 @@ nlohmann::json ModbusLink::summary() const {
           {"clients_dropped", c.clients_dropped}};
 }
 
+void check_modbus_endpoint(const std::string& endpoint) {
+  try {
+    io::control::parse_modbus_endpoint(endpoint);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--modbus ") + e.what());
+  }
+}
+
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, ScenarioRunner& runner,
+                                                    io::LatencyMode initial_latency, bool quiet) {
+  return std::make_unique<ModbusLink>(endpoint, runner, initial_latency, quiet);
+}
+
 }  // namespace ig::app
-#endif  // IG_WITH_MODBUS

@@ -2,7 +2,8 @@
 // ig serve's side of the Modbus server (docs/modbus.md): controls applied at
 // the frame boundary, a status snapshot published after every frame. The
 // server thread is never waited on: both are short copies under its mutex.
-// Built only with IG_WITH_MODBUS.
+// Built only with IG_WITH_MODBUS (else modbus_link_off.cpp); ig serve sees
+// it as a ControlSurface (serve_plugins.h).
 
 #include <memory>
 #include <optional>
@@ -16,25 +17,20 @@
 #include "io/filter/pose_filter.h"
 #include "pose_feed.h"
 #include "scenario_runner.h"
+#include "serve_plugins.h"
 
 namespace ig::app {
 
-class ModbusLink {
+class ModbusLink final : public ControlSurface {
  public:
   // initial_latency: the mode the run starts in (the latency_mode register's first value).
   ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet);
 
-  struct Applied {
-    bool capture = false;                    // capture this frame
-    std::optional<io::LatencyMode> latency;  // latency_mode written
-  };
   // Before rendering: freeze, wireframe, thresholds, fog, rebuilds, latency mode.
-  Applied apply_controls();
-  bool frozen() const { return frozen_; }
-
+  Applied apply_controls() override;
   void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
-               const io::control::IgStatus& can_part);
-  nlohmann::json summary() const;
+               const ExtraSourceStatus& source) override;
+  nlohmann::json summary() const override;
 
  private:
   ScenarioRunner& runner_;

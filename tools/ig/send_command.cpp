@@ -21,9 +21,9 @@
 #include "io/net/udp_socket.h"
 #ifdef IG_WITH_CAN
 #include "io/can/can_socket.h"
+#endif
 #include "io/wire/can_fd_pose.h"
 #include "io/wire/canaerospace.h"
-#endif
 #include "io/path_interpolator.h"
 #include "io/pose_intake.h"
 #include "io/wire/cigi.h"

@@ -32,13 +32,7 @@
 #include "run_outputs.h"
 #include "scenario_runner.h"
 #include "scene_setup.h"
-#ifdef IG_WITH_CAN
-#include "io/can/can_pose_source.h"
-#endif
-#ifdef IG_WITH_MODBUS
-#include "io/control/modbus_server.h"
-#include "modbus_link.h"
-#endif
+#include "serve_plugins.h"
 
 namespace ig::app {
 namespace {
@@ -133,21 +127,8 @@ Args parse_args(const std::vector<std::string>& a) {
   if (args.cigi_reply && !args.cigi) throw UsageError("--cigi-reply needs --cigi");
   if (!args.udp && !args.cigi && !args.fgfdm && !args.can)
     throw UsageError("no pose source: give --udp, --cigi, --fgfdm or --can");
-#ifndef IG_WITH_CAN
-  if (args.can) throw UsageError("--can: this ig was built without SocketCAN (IG_WITH_CAN=OFF)");
-#endif
   args.run.headless = !window;
-#ifdef IG_WITH_MODBUS
-  if (args.modbus) {
-    try {
-      io::control::parse_modbus_endpoint(*args.modbus);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--modbus ") + e.what());
-    }
-  }
-#else
-  if (args.modbus) throw UsageError("--modbus: this ig was built without Modbus (IG_WITH_MODBUS=OFF)");
-#endif
+  if (args.modbus) check_modbus_endpoint(*args.modbus);
   return args;
 }
 
@@ -226,23 +207,12 @@ int run_serve_command(const std::vector<std::string>& argv) {
     DrawnSurface drawn(runner);
     if (services && args.host_surface_drawn)
       services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
-#ifdef IG_WITH_MODBUS
-    std::unique_ptr<ModbusLink> modbus;
-    if (args.modbus) modbus = std::make_unique<ModbusLink>(*args.modbus, runner, latency, args.quiet);
-#endif
+    std::unique_ptr<ControlSurface> control;  // Modbus
+    if (args.modbus) control = make_modbus_surface(*args.modbus, runner, latency, args.quiet);
     std::optional<io::Pose> last_pose;  // for freeze
-#ifdef IG_WITH_CAN
-    std::unique_ptr<io::can::CanPoseSource> can;
-    std::uint64_t can_state = 0;
-    if (args.can) {
-      io::can::CanPoseSourceOptions o;
-      o.ifname = *args.can;
-      o.pose.altitude_id = std::uint16_t(args.can_altitude);
-      o.pose.max_age_s = args.can_max_age_ms * 1e-3;
-      if (args.can_node) o.decode.node_id = std::uint8_t(*args.can_node);
-      can = std::make_unique<io::can::CanPoseSource>(o);
-    }
-#endif
+    std::unique_ptr<ExtraPoseSource> extra_source;  // SocketCAN
+    if (args.can)
+      extra_source = make_can_source({*args.can, args.can_altitude, args.can_node, args.can_max_age_ms, args.quiet});
 
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
@@ -308,24 +278,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
       // starts after, so every receive time is in its past.
       for (auto& src : sources)
         if (!sync || &src != cigi_source) poll_source(src, 4096);
-#ifdef IG_WITH_CAN
-      if (can) {
-        can->poll([&](const io::wire::PoseMessage& m, double t, io::can::CanFormat fmt) {
-          feed.intake().handle_pose(fmt == io::can::CanFormat::CanFd ? io::Protocol::CanFd : io::Protocol::CanAerospace,
-                                    m, t);
-        });
-        // Say each change of the interface's state once; rendering goes on
-        // with the last good pose (the filter holds / extrapolates it).
-        if (can->socket().state_changes() != can_state) {
-          can_state = can->socket().state_changes();
-          const auto& err = can->socket().last_error();
-          if (!err.empty())
-            std::cerr << "ig serve: CAN " << err << "; retrying every 0.5 s, rendering the last good pose\n";
-          else if (!args.quiet)
-            std::cerr << "ig serve: CAN " << *args.can << ": receiving\n";
-        }
-      }
-#endif
+      if (extra_source) extra_source->poll(feed);
       const double frame_start = io::net::steady_now_s();
       const bool last = (args.frames && k == *args.frames - 1) ||
                         (args.seconds && frame_start - start + (sync ? 0.0 : period) >= *args.seconds) || g_stop;
@@ -335,11 +288,10 @@ int run_serve_command(const std::vector<std::string>& argv) {
         capture = true;
         ++next_capture;
       }
-#ifdef IG_WITH_MODBUS
-      if (modbus) {
-        const auto applied = modbus->apply_controls();
+      if (control) {
+        const auto applied = control->apply_controls();
         capture = capture || applied.capture;
-        frozen = modbus->frozen();
+        frozen = applied.frozen;
         if (applied.latency) {
           if (*applied.latency == io::LatencyMode::Synchronous && !cigi_source) {
             std::cerr << "ig serve: modbus: latency_mode 2 (CIGI synchronous) needs --cigi; keeping "
@@ -351,7 +303,6 @@ int run_serve_command(const std::vector<std::string>& argv) {
           }
         }
       }
-#endif
       const auto t0 = std::chrono::steady_clock::now();
       // Frozen: the last pose again; the sources are still drained and counted.
       const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
@@ -371,22 +322,9 @@ int run_serve_command(const std::vector<std::string>& argv) {
         services->answer_frame(pose);  // the frame ends: a new native budget
       }
       outputs.frame(runner, f, capture, last, total, [&](std::vector<stats::Cell>& row) { feed.append_columns(row); });
-#ifdef IG_WITH_MODBUS
-      if (modbus) {
-        io::control::IgStatus can_part;
-#ifdef IG_WITH_CAN
-        if (can) {
-          const auto& cs = can->socket().stats();
-          can_part.can_link = can->socket().is_open() ? 1 : 2;
-          can_part.can_poses = std::uint32_t(can->poses());
-          can_part.can_rejected = std::uint32_t(can->canaerospace_stats().rejected() + can->fd_stats().frames -
-                                                can->fd_stats().accepted);
-          can_part.can_error_frames = std::uint32_t(cs.error_frames);
-        }
-#endif
-        modbus->publish(k + 1, frame_start, io::net::steady_now_s(), feed, last, can_part);
-      }
-#endif
+      if (control)
+        control->publish(k + 1, frame_start, io::net::steady_now_s(), feed, last,
+                         extra_source ? extra_source->status() : ExtraSourceStatus{});
       if (last || (!runner.context().headless() && runner.window_closed())) break;
       if (runner.context().headless() && !sync) {
         // Own rate; a window paces on vsync; synchronous mode on the host.
@@ -412,12 +350,8 @@ int run_serve_command(const std::vector<std::string>& argv) {
     if (services) extra["host_services"] = services->summary();
     if (cigi_source) extra["view_control"] = views.summary();
     if (recorder) extra["recording"] = {{"file", *args.record}, {"datagrams", recorder->count()}};
-#ifdef IG_WITH_CAN
-    if (can) extra["can"] = can->summary();
-#endif
-#ifdef IG_WITH_MODBUS
-    if (modbus) extra["modbus"] = modbus->summary();
-#endif
+    if (extra_source) extra[extra_source->summary_key()] = extra_source->summary();
+    if (control) extra["modbus"] = control->summary();
     return outputs.finish(runner, config, extra);
   } catch (const std::exception& e) {
     std::cerr << "ig serve: " << e.what() << "\n";
