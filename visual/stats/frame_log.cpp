@@ -19,8 +19,8 @@ std::string format_number(double v) {
 }
 }  // namespace
 
-Cell::Cell(std::string n, double v) : name(std::move(n)), text(format_number(v)) {}
-Cell::Cell(std::string n, long long v) : name(std::move(n)), text(std::to_string(v)) {}
+Cell::Cell(std::string n, double v) : name(std::move(n)), text(format_number(v)), value(v) {}
+Cell::Cell(std::string n, long long v) : name(std::move(n)), text(std::to_string(v)), value(double(v)) {}
 
 Percentiles percentiles(std::vector<double> v) {
   Percentiles p;
@@ -57,7 +57,7 @@ void FrameLog::add_row(const std::vector<Cell>& cells) {
   for (size_t k = 0; k < cells.size(); ++k) {
     if (cells[k].name != header_[k]) throw std::logic_error("frame log column " + cells[k].name + " out of order");
     out_ << (k ? "," : "") << cells[k].text;
-    if (cells[k].name == "wall_ms") frame_ms_.push_back(std::stod(cells[k].text));
+    if (cells[k].name == "wall_ms" && cells[k].value) frame_ms_.push_back(*cells[k].value);
   }
   out_ << '\n';
   out_.flush();

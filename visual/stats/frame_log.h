@@ -4,6 +4,7 @@
 // must carry the same names in the same order.
 
 #include <fstream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,7 +16,8 @@ namespace ig::stats {
 // A value is a number or a short text (e.g. the passes that ran).
 struct Cell {
   std::string name;
-  std::string text;
+  std::string text;                   // as written to the CSV
+  std::optional<double> value;        // numeric cells: the number itself (statistics use it, not the text)
   Cell(std::string n, double v);
   Cell(std::string n, long long v);
   Cell(std::string n, int v) : Cell(std::move(n), static_cast<long long>(v)) {}
