@@ -8,3 +8,10 @@ add_test(NAME cli.serve.cigi_host_services
           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/host_services 47200 10)
 set_tests_properties(cli.serve.cigi_host_services PROPERTIES LABELS "cli;net" SKIP_RETURN_CODE 77
   PASS_REGULAR_EXPRESSION "PASS host services" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+
+# A flood beyond the per-frame budget: answered over later frames, none lost.
+add_test(NAME cli.serve.cigi_request_flood
+  COMMAND bash ${CMAKE_SOURCE_DIR}/tests/tools/host_flood.sh $<TARGET_FILE:ig> $<TARGET_FILE:cigi_query_host>
+          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/host_flood 47220)
+set_tests_properties(cli.serve.cigi_request_flood PROPERTIES LABELS "cli;net" SKIP_RETURN_CODE 77
+  PASS_REGULAR_EXPRESSION "PASS flood summary" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)

@@ -11,6 +11,7 @@
 //
 //   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES [--native IG_UDP_ADDR:PORT]
 //   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES --bench HOT LOS [SPREAD_M]
+//   cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES --flood PER_FRAME BUDGET
 //
 // --native: each frame also sends native height / line-of-sight queries
 // ("IGQR") to the IG's native port from its own socket, and checks the
@@ -20,6 +21,12 @@
 // vectors, 5-20 km) every frame at most 60 frames a second, and the time
 // from sending a frame to receiving its answers (docs/results.md). HAT/HOT
 // points are spread over the whole DEM, or within SPREAD_M of the ownship.
+//
+// --flood: against an IG in its own time (not synchronous): for FRAMES of
+// the IG's Start Of Frames, sends PER_FRAME HOT requests (in datagrams of
+// 1000) after each, more than the IG's per-frame BUDGET, then reads on until
+// every request is answered. Checks: each answer once, no datagram with
+// more than BUDGET HAT/HOT answers, the IG's frames went on (PASS / FAIL).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -68,7 +75,8 @@ struct Expect {
 int main(int argc, char** argv) {
   const bool bench = (argc == 8 || argc == 9) && std::string(argv[5]) == "--bench";
   const bool native = argc == 7 && std::string(argv[5]) == "--native";
-  if (argc != 5 && !bench && !native) {
+  const bool flood = argc == 8 && std::string(argv[5]) == "--flood";
+  if (argc != 5 && !bench && !native && !flood) {
     std::fprintf(stderr, "usage: cigi_query_host DEM_FILE IG_ADDR:PORT LISTEN_ADDR:PORT FRAMES [--bench HOT LOS [SPREAD_M]]\n");
     return 2;
   }
@@ -110,6 +118,73 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(15);
   std::uniform_real_distribution<double> ux(0.05 * hf.extent_x_m(), 0.95 * hf.extent_x_m()),
       uy(0.05 * hf.extent_y_m(), 0.95 * hf.extent_y_m()), uaz(-180, 180);
+  if (flood) {
+    const int per_frame = std::stoi(argv[6]);
+    const std::size_t budget = std::stoul(argv[7]);
+    std::vector<int> answered(65536, 0);
+    std::size_t sent = 0, got = 0, max_in_datagram = 0, sofs = 0, sofs_with_answers = 0;
+    std::uint32_t first_ig_frame = 0, last_ig_frame = 0;
+    auto read_frame = [&] {  // one IG frame's datagram: count its answers
+      for (;;) {
+        const auto dg = next_datagram();
+        const auto sof = decode_cigi_start_of_frame(dg);
+        if (!sof.sof) continue;
+        if (sofs++ == 0) first_ig_frame = sof.sof->ig_frame;
+        last_ig_frame = sof.sof->ig_frame;
+        std::size_t n = 0;
+        if (const auto r = decode_cigi_responses(dg))
+          for (const auto& a : *r)
+            if (const auto* h = std::get_if<HatHotResponse>(&a)) {
+              ++answered[h->id];
+              ++n;
+            }
+        got += n;
+        sofs_with_answers += n > 0;
+        max_in_datagram = std::max(max_in_datagram, n);
+        return;
+      }
+    };
+    const dvec3 own_at(0.5 * hf.extent_x_m(), 0.4 * hf.extent_y_m(), 4000.0);
+    for (int k = 1; k <= frames; ++k) {
+      for (int left = per_frame; left > 0; left -= 1000) {
+        PoseMessage ownship;
+        ownship.frame = PoseMessage::Frame::Geodetic;
+        ownship.position = geodetic(own_at);
+        std::vector<std::uint8_t> d = encode_cigi_host_datagram(std::uint32_t(k), kCigiModeOperate, ownship, false);
+        for (int n = 0; n < std::min(left, 1000); ++n) {
+          HatHotRequest r;
+          r.id = std::uint16_t(sent++);
+          r.type = HatHotType::Hot;
+          r.point = geodetic(dvec3(ux(rng), uy(rng), 3000.0));
+          const auto packet = encode_cigi_hat_hot_request(r, false);
+          d.insert(d.end(), packet.begin(), packet.end());
+        }
+        to_ig.send(d);
+      }
+      read_frame();  // the IG's next frame paces the host, no clock involved
+    }
+    // Drain: the IG answers the backlog a budget per frame.
+    std::size_t idle = 0;
+    while (got < sent && idle < 20) {
+      const std::size_t before = got;
+      read_frame();
+      idle = got == before ? idle + 1 : 0;
+    }
+    std::size_t duplicates = 0, missing = 0;
+    for (std::size_t id = 0; id < sent; ++id) {
+      missing += answered[id] == 0;
+      duplicates += answered[id] > 1;
+    }
+    std::printf("flood: %zu HOT requests sent over %d IG frames (%d a frame), %zu answered, %zu missing, %zu twice; "
+                "at most %zu answers in one IG datagram (budget %zu); %zu IG frames seen (IG frames %u..%u), %zu with "
+                "answers\n",
+                sent, frames, per_frame, got, missing, duplicates, max_in_datagram, budget, sofs, first_ig_frame,
+                last_ig_frame, sofs_with_answers);
+    const bool ok = missing == 0 && duplicates == 0 && max_in_datagram <= budget &&
+                    sofs_with_answers >= sent / budget && last_ig_frame > first_ig_frame;
+    std::printf("%s flood\n", ok ? "PASS" : "FAIL");
+    return ok ? 0 : 1;
+  }
   if (bench) {
     const int n_hot = std::stoi(argv[6]), n_los = std::stoi(argv[7]);
     const double spread = argc == 9 ? std::stod(argv[8]) : 0.0;
