@@ -285,7 +285,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
 
 TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
   require_object(j, path);
-  check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride", "band", "eye_guard", "level0_envelope", "predict_size"});
+  check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride", "band", "eye_guard", "level0_envelope", "level0_error", "predict_size"});
   TwoLevelSpec t;
   if (j.contains("level0_budget"))
     t.level0_budget = static_cast<int>(get_integer(j["level0_budget"], child(path, "level0_budget"), 2, 10000000));
@@ -302,6 +302,8 @@ TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
   }
   if (j.contains("band_stride")) t.band_stride = static_cast<int>(get_integer(j["band_stride"], child(path, "band_stride"), 1, 64));
   if (j.contains("band")) t.band = get_choice(j["band"], child(path, "band"), {"inline", "target"});
+  if (j.contains("level0_error"))
+    t.level0_error = get_choice(j["level0_error"], child(path, "level0_error"), {"midpoint", "whole"});
   if (j.contains("eye_guard")) t.eye_guard = get_bool(j["eye_guard"], child(path, "eye_guard"));
   if (j.contains("level0_envelope"))
     t.level0_envelope = get_bool(j["level0_envelope"], child(path, "level0_envelope"));

@@ -52,6 +52,7 @@ struct TwoLevelSpec {
   std::string band = "inline";  // band uv1 / beta: inline (in Level0's shader) | target (the paper's separate pass)
   bool eye_guard = true;      // Level1 also covers the ground under a low eye
   bool level0_envelope = false;  // Level0 lifted to a conservative upper envelope (no sky through it)
+  std::string level0_error = "midpoint";  // Level0 refinement error: midpoint (nested, the paper's) | whole (whole triangle)
   bool predict_size = true;      // Level1 size from a ray-cast prediction of R (false: the paper's steps)
 };
 

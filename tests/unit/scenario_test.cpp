@@ -457,7 +457,7 @@ TEST(ScenarioTwoLevel, DefaultsAreThePapers) {
 
 TEST(ScenarioTwoLevel, ReadsEveryKey) {
   const auto s = ig::io::parse_scenario(with_twolevel(
-      R"({"level0_budget": 4096, "a1": 0.4, "a2": 0.9, "alpha": 500, "beta": "gaussian", "max_level1": 513, "band_stride": 1, "band": "target"})"));
+      R"({"level0_budget": 4096, "a1": 0.4, "a2": 0.9, "alpha": 500, "beta": "gaussian", "max_level1": 513, "band_stride": 1, "band": "target", "level0_error": "whole"})"));
   const auto& t = s.render.twolevel;
   EXPECT_EQ(t.level0_budget, 4096);
   EXPECT_DOUBLE_EQ(t.a1, 0.4);
@@ -467,6 +467,7 @@ TEST(ScenarioTwoLevel, ReadsEveryKey) {
   EXPECT_EQ(t.max_level1, 513);
   EXPECT_EQ(t.band_stride, 1);
   EXPECT_EQ(t.band, "target");
+  EXPECT_EQ(t.level0_error, "whole");
 }
 
 TEST(ScenarioTwoLevel, BadValuesNameTheirKey) {

@@ -25,6 +25,7 @@ render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& t) {
   o.max_level1 = t.max_level1;
   o.band_stride = t.band_stride;
   o.band_inline = t.band == "inline";
+  o.level0_whole_error = t.level0_error == "whole";
   o.eye_guard = t.eye_guard;
   o.level0_envelope = t.level0_envelope;
   o.predict_size = t.predict_size;

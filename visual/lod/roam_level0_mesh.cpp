@@ -32,6 +32,7 @@ struct Tri {
   glm::ivec2 v[3];
   int nb_base = -1, nb_left = -1, nb_right = -1;
   int child[2] = {-1, -1};  // [0] = (m, apex, left), [1] = (m, right, apex)
+  float whole_error = -1.0f;  // whole-triangle error, once measured (Level0Options::whole_triangle_error)
 };
 
 class Builder {
@@ -71,7 +72,7 @@ class Builder {
   }
   float error_of(const Tri& t) const {
     const glm::ivec2 m = (t.v[1] + t.v[2]) / 2;
-    float e = eg_.error[static_cast<std::size_t>(m.y) * eg_.side + m.x];
+    float e = opts_.whole_triangle_error ? t.whole_error : eg_.error[static_cast<std::size_t>(m.y) * eg_.side + m.x];
     if (opts_.earth_radius_m > 0.0) {
       const glm::dvec2 d = glm::dvec2(t.v[1] - t.v[2]) * glm::dvec2(hf_.spacing_x_m, hf_.spacing_y_m);
       e += float((d.x * d.x + d.y * d.y) / (8.0 * opts_.earth_radius_m));
@@ -88,7 +89,38 @@ class Builder {
     }
   };
 
+  // Largest |sample - plane| over the DEM samples inside t (edges included).
+  float whole_error(const Tri& t) const {
+    const glm::ivec2 a = t.v[0], b = t.v[1], c = t.v[2];
+    const double ha = hf_.at_clamped(a.x, a.y), hb = hf_.at_clamped(b.x, b.y), hc = hf_.at_clamped(c.x, c.y);
+    const double det = double(b.x - a.x) * (c.y - a.y) - double(c.x - a.x) * (b.y - a.y);
+    if (det == 0.0) return 0.0f;
+    // Plane h(i, j) = ha + gx (i - a.x) + gy (j - a.y).
+    const double gx = ((hb - ha) * (c.y - a.y) - (hc - ha) * (b.y - a.y)) / det;
+    const double gy = ((hc - ha) * (b.x - a.x) - (hb - ha) * (c.x - a.x)) / det;
+    const int x0 = std::max(0, std::min({a.x, b.x, c.x})), x1 = std::min(lim_x_, std::max({a.x, b.x, c.x}));
+    const int y0 = std::max(0, std::min({a.y, b.y, c.y})), y1 = std::min(lim_y_, std::max({a.y, b.y, c.y}));
+    auto edge = [](glm::ivec2 p, glm::ivec2 q, int i, int j) {
+      return std::int64_t(q.x - p.x) * (j - p.y) - std::int64_t(q.y - p.y) * (i - p.x);
+    };
+    const bool ccw = det > 0;
+    float worst = 0.0f;
+    for (int j = y0; j <= y1; ++j) {
+      const float* row = hf_.heights.data() + std::size_t(j) * hf_.width;
+      for (int i = x0; i <= x1; ++i) {
+        const std::int64_t e0 = edge(a, b, i, j), e1 = edge(b, c, i, j), e2 = edge(c, a, i, j);
+        const bool in = ccw ? (e0 >= 0 && e1 >= 0 && e2 >= 0) : (e0 <= 0 && e1 <= 0 && e2 <= 0);
+        if (!in) continue;
+        const double plane = ha + gx * (i - a.x) + gy * (j - a.y);
+        worst = std::max(worst, float(std::abs(row[i] - plane)));
+      }
+    }
+    return worst;
+  }
+
   void consider(int id) {
+    if (opts_.whole_triangle_error && tris_[id].whole_error < 0.0f && inside(tris_[id]) && splittable(tris_[id]))
+      tris_[id].whole_error = whole_error(tris_[id]);
     const Tri& t = tris_[id];
     if (!inside(t) || !splittable(t)) return;
     const float e = error_of(t);

@@ -38,6 +38,12 @@ struct Level0Options {
   // the sphere between its vertices: added to each triangle's error so flat
   // ground (error 0) still refines where the curve needs it.
   double earth_radius_m = 0.0;
+  // Error of a triangle measured over the whole triangle: the largest
+  // vertical distance between its plane and any DEM sample it covers (so
+  // max_error_m bounds every sample), instead of the nested error at
+  // hypotenuse midpoints (the paper's ROAM). Slower to build (each
+  // considered triangle visits its samples).
+  bool whole_triangle_error = false;
 };
 
 struct Level0Mesh {

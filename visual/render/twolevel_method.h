@@ -46,6 +46,8 @@ struct TwoLevelOptions {
   // Level0 lifted to a conservative upper envelope (lod/level0_envelope.h):
   // no ridge cut below the skyline, so no sky through Level0 terrain.
   bool level0_envelope = false;
+  // Level0 refined on whole-triangle error (lod::Level0Options::whole_triangle_error).
+  bool level0_whole_error = false;
   // Size control predicts R for every ladder size from a grid of view rays
   // and jumps to the right size (lod/level1_coverage_predictor.h); false:
   // the paper's one step per frame on the measured R alone.
