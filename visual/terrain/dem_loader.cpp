@@ -1,5 +1,6 @@
 #include "terrain/dem_loader.h"
 #include "terrain/dem_mosaic.h"
+#include "terrain/gdal_support.h"
 
 #include <gdal.h>
 #include <cpl_conv.h>
@@ -20,7 +21,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <mutex>
 #include <new>
 #include <numbers>
 #include <string_view>
@@ -38,15 +38,7 @@ constexpr std::uintmax_t kHgt1201Bytes = 2ull * 1201 * 1201;  // 2 884 802
 constexpr std::uintmax_t kHgt3601Bytes = 2ull * 3601 * 3601;  // 25 934 402
 constexpr float kSrtmVoid = -32768.0f;
 
-// Messages are one line: GDAL and OpenImageIO sometimes return several.
-std::string one_line(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-  while (!s.empty() && (s.back() == ' ' || s.back() == '.')) s.pop_back();
-  std::size_t start = 0;
-  while (start < s.size() && s[start] == ' ') ++start;
-  return s.substr(start);
-}
+using gdal::one_line;
 
 std::string lower(std::string s) {
   for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -143,25 +135,6 @@ void flip_rows(std::vector<float>& h, int w, int ht) {
 
 // ----------------------------------------------------------------- GDAL ---
 
-void gdal_register_once() {
-  static std::once_flag once;
-  std::call_once(once, [] { GDALAllRegister(); });
-}
-
-// Silences GDAL's stderr output on this thread for the scope; failures are
-// reported through CPLGetLastErrorMsg() instead.
-struct QuietGdal {
-  QuietGdal() {
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-  }
-  ~QuietGdal() { CPLPopErrorHandler(); }
-  QuietGdal(const QuietGdal&) = delete;
-  QuietGdal& operator=(const QuietGdal&) = delete;
-};
-
-std::string gdal_last_error() { return one_line(CPLGetLastErrorMsg()); }
-
 // GDAL messages often start with the file name ("x.tif: ...", "x.tif, band
 // 1: ..."); ours already do, so drop that prefix.
 std::string without_path(std::string msg, const std::string& path) {
@@ -180,12 +153,6 @@ std::string without_path(std::string msg, const std::string& path) {
   }
   return msg;
 }
-
-struct GdalCloser {
-  void operator()(void* ds) const {
-    if (ds) GDALClose(static_cast<GDALDatasetH>(ds));
-  }
-};
 
 // Metres per vertical unit of the band ("m", "ft", ...); 1 when unknown.
 double vertical_unit_to_metres(const char* unit) {
@@ -217,14 +184,14 @@ std::string crs_short_name(OGRSpatialReferenceH srs) {
 
 Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
                            bool is_hgt) {
-  gdal_register_once();
-  QuietGdal quiet;
+  gdal::register_once();
+  gdal::QuietErrors quiet;
 
-  std::unique_ptr<void, GdalCloser> ds(GDALOpenEx(
+  gdal::Dataset ds(GDALOpenEx(
       path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR, nullptr,
       nullptr, nullptr));
   if (!ds) {
-    const std::string msg = without_path(gdal_last_error(), path);
+    const std::string msg = without_path(gdal::last_error(), path);
     if (is_hgt)
       throw DemError(path, "not a recognised raster format (SRTM .hgt files must be named "
                            "after their tile, e.g. N44W072.hgt)");
@@ -261,7 +228,7 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
   const CPLErr err = GDALRasterIO(band, GF_Read, 0, 0, w, ht, hf.heights.data(), w, ht,
                                   GDT_Float32, 0, 0);
   if (err != CE_None) {
-    const std::string msg = without_path(gdal_last_error(), path);
+    const std::string msg = without_path(gdal::last_error(), path);
     throw DemError(path, "read failed (truncated or corrupt file?)" +
                              (msg.empty() ? std::string() : ": " + msg));
   }
@@ -613,16 +580,7 @@ std::string dem_info_json(const Heightfield& hf) {
       json_point(o, corners[k].second[0], corners[k].second[1]);
     }
     o += '}';
-    // Outer pixel edges: half a sample beyond the corner sample centres.
-    double west = 1e300, east = -1e300, south = 1e300, north = -1e300;
-    for (double i : {-0.5, ie + 0.5})
-      for (double j : {-0.5, je + 0.5}) {
-        const auto p = at(i, j);
-        west = std::min(west, p[0]);
-        east = std::max(east, p[0]);
-        south = std::min(south, p[1]);
-        north = std::max(north, p[1]);
-      }
+    const auto [west, south, east, north] = *hf.crs_bounds();
     key("bounds");
     o += "{\"west\": ";
     json_number(o, west);

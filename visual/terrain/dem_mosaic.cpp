@@ -9,40 +9,24 @@
 #include <ogr_srs_api.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
-#include <memory>
-#include <mutex>
 
 #include "terrain/dem_loader.h"
+#include "terrain/gdal_support.h"
 
 namespace ig::terrain {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct DatasetCloser {
-  void operator()(void* ds) const {
-    if (ds) GDALClose(static_cast<GDALDatasetH>(ds));
-  }
-};
-using Dataset = std::unique_ptr<void, DatasetCloser>;
+using gdal::Dataset;
+using gdal::handle;
+using gdal::last_error;
+using gdal::number_arg;
 
-struct QuietGdal {  // failures are read from CPLGetLastErrorMsg, not printed
-  QuietGdal() {
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-  }
-  ~QuietGdal() { CPLPopErrorHandler(); }
-};
-
-std::string last_error(const char* otherwise = "not a recognised raster format") {
-  std::string m = CPLGetLastErrorMsg();
-  std::replace(m.begin(), m.end(), '\n', ' ');
-  return m.empty() ? std::string(otherwise) : m;
-}
+constexpr const char* kUnreadable = "not a recognised raster format";
 
 // A warped VRT of `tile` in `wkt` on the grid of the first tile (origin
 // `grid` [0], [3], pixel size [1], [5]): the tile's reprojected extent
@@ -53,9 +37,8 @@ std::string warp_onto_grid(GDALDatasetH tile, const std::string& from_wkt, const
   Dataset probe(GDALAutoCreateWarpedVRT(tile, from_wkt.c_str(), wkt.c_str(), GRA_Bilinear, 0.125, nullptr));
   if (!probe) return last_error("no transformation between the CRSs");
   double gt[6];
-  GDALGetGeoTransform(static_cast<GDALDatasetH>(probe.get()), gt);
-  const double w = GDALGetRasterXSize(static_cast<GDALDatasetH>(probe.get()));
-  const double h = GDALGetRasterYSize(static_cast<GDALDatasetH>(probe.get()));
+  GDALGetGeoTransform(handle(probe), gt);
+  const double w = GDALGetRasterXSize(handle(probe)), h = GDALGetRasterYSize(handle(probe));
   const double rx = grid[1], ry = std::fabs(grid[5]);
   auto snap_down = [](double v, double o, double r) { return o + std::floor((v - o) / r) * r; };
   auto snap_up = [](double v, double o, double r) { return o + std::ceil((v - o) / r) * r; };
@@ -63,21 +46,10 @@ std::string warp_onto_grid(GDALDatasetH tile, const std::string& from_wkt, const
   const double x1 = snap_up(std::max(gt[0], gt[0] + w * gt[1]), grid[0], rx);
   const double y0 = snap_down(std::min(gt[3], gt[3] + h * gt[5]), grid[3], ry);
   const double y1 = snap_up(std::max(gt[3], gt[3] + h * gt[5]), grid[3], ry);
-  auto num = [](double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return std::string(b);
-  };
-  const std::vector<std::string> args = {"-of", "VRT", "-t_srs", wkt, "-r", "bilinear", "-te", num(x0), num(y0),
-                                         num(x1), num(y1), "-tr", num(rx), num(ry), "-dstnodata", "-32768"};
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  GDALWarpAppOptions* options = GDALWarpAppOptionsNew(argv.data(), nullptr);
-  int usage_error = 0;
-  CPLErrorReset();
-  Dataset warped(GDALWarp(out.c_str(), nullptr, 1, &tile, options, &usage_error));
-  GDALWarpAppOptionsFree(options);
+  const Dataset warped =
+      gdal::warp(tile, out, {"-of", "VRT", "-t_srs", wkt, "-r", "bilinear", "-te", number_arg(x0), number_arg(y0),
+                             number_arg(x1), number_arg(y1), "-tr", number_arg(rx), number_arg(ry), "-dstnodata",
+                             "-32768"});
   return warped ? std::string() : last_error("warp failed");
 }
 
@@ -108,11 +80,8 @@ const std::vector<std::string>& dem_tile_extensions() {
 }
 
 DemMosaic::DemMosaic(const std::string& folder) {
-  {
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
-  }
-  QuietGdal quiet;
+  gdal::register_once();
+  gdal::QuietErrors quiet;
   std::error_code ec;
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(folder, ec))
@@ -131,8 +100,8 @@ DemMosaic::DemMosaic(const std::string& folder) {
     const std::string path = f.string();
     CPLErrorReset();
     Dataset ds(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
-    if (!ds) throw DemError(path, "tile cannot be read: " + last_error());
-    auto* h = static_cast<GDALDatasetH>(ds.get());
+    if (!ds) throw DemError(path, std::string("tile cannot be read: ") + last_error(kUnreadable));
+    GDALDatasetH h = handle(ds);
     if (GDALGetRasterCount(h) != 1)
       throw DemError(path, "tile has " + std::to_string(GDALGetRasterCount(h)) +
                                " raster bands; a DEM tile must have exactly one");
@@ -179,7 +148,7 @@ DemMosaic::DemMosaic(const std::string& folder) {
   int usage_error = 0;
   Dataset vrt(GDALBuildVRT(vrt_path_.c_str(), int(names.size()), nullptr, names.data(), options, &usage_error));
   GDALBuildVRTOptionsFree(options);
-  if (!vrt) throw DemError(folder, "tiles cannot be mosaicked: " + last_error());
+  if (!vrt) throw DemError(folder, std::string("tiles cannot be mosaicked: ") + last_error(kUnreadable));
   memory_files_.push_back(vrt_path_);
 }
 

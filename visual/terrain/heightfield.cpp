@@ -41,6 +41,18 @@ double Heightfield::sample_surface(double x_m, double y_m) const {
   return c.h00 + (c.h01 - c.h00) * c.fy + (c.h11 - c.h01) * c.fx;
 }
 
+std::optional<std::array<double, 4>> Heightfield::crs_bounds() const {
+  if (!georef) return std::nullopt;
+  const auto& g = georef->grid_to_crs;
+  std::array<double, 4> b = {1e300, 1e300, -1e300, -1e300};
+  for (double i : {-0.5, width - 0.5})
+    for (double j : {-0.5, height - 0.5}) {
+      const double x = g[0] + i * g[1] + j * g[2], y = g[3] + i * g[4] + j * g[5];
+      b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
+    }
+  return b;
+}
+
 void Heightfield::finalize_stats() {
   if (heights.empty()) {
     min_m = max_m = 0.0f;

@@ -55,6 +55,10 @@ struct Heightfield {
   double sample_surface(double x_m, double y_m) const;
 
   void finalize_stats();
+
+  // Georeferenced grids: the outer sample edges (half a sample beyond the
+  // corner sample centres) in the DEM's CRS: west, south, east, north.
+  std::optional<std::array<double, 4>> crs_bounds() const;
 };
 
 }  // namespace ig::terrain

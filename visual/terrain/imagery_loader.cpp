@@ -4,60 +4,22 @@
 #include <cpl_error.h>
 #include <gdal.h>
 #include <gdal_alg.h>
-#include <gdal_utils.h>
 #include <ogr_srs_api.h>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <cstdio>
-#include <memory>
-#include <mutex>
 
 #include "terrain/dem_loader.h"
+#include "terrain/gdal_support.h"
 
 namespace ig::terrain {
 namespace {
 
-struct DatasetCloser {
-  void operator()(void* ds) const {
-    if (ds) GDALClose(static_cast<GDALDatasetH>(ds));
-  }
-};
-using Dataset = std::unique_ptr<void, DatasetCloser>;
-
-struct QuietGdal {
-  QuietGdal() {
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-  }
-  ~QuietGdal() { CPLPopErrorHandler(); }
-};
-
-std::string last_error(const char* otherwise) {
-  std::string m = CPLGetLastErrorMsg();
-  std::replace(m.begin(), m.end(), '\n', ' ');
-  return m.empty() ? std::string(otherwise) : m;
-}
-
-std::string num(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
-
-// The DEM's footprint in its CRS: outer sample edges (west, south, east, north).
-std::array<double, 4> dem_bounds(const Heightfield& hf) {
-  const auto& g = hf.georef->grid_to_crs;
-  double w = 1e300, s = 1e300, e = -1e300, n = -1e300;
-  for (double i : {-0.5, hf.width - 0.5})
-    for (double j : {-0.5, hf.height - 0.5}) {
-      const double x = g[0] + i * g[1] + j * g[2], y = g[3] + i * g[4] + j * g[5];
-      w = std::min(w, x), e = std::max(e, x), s = std::min(s, y), n = std::max(n, y);
-    }
-  return {w, s, e, n};
-}
+using gdal::Dataset;
+using gdal::handle;
+using gdal::last_error;
+using gdal::number_arg;
 
 // Reads bands 1-3 (or band 1 three times for grey) as RGB, north row first.
 std::vector<std::uint8_t> read_rgb(GDALDatasetH ds, const std::string& path) {
@@ -75,21 +37,18 @@ std::vector<std::uint8_t> read_rgb(GDALDatasetH ds, const std::string& path) {
 }  // namespace
 
 Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_side) {
-  {
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
-  }
-  QuietGdal quiet;
+  gdal::register_once();
+  gdal::QuietErrors quiet;
   Dataset src(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!src) throw DemError(path, "imagery cannot be read: " + last_error("not a recognised raster format"));
-  auto* h = static_cast<GDALDatasetH>(src.get());
+  GDALDatasetH h = handle(src);
   double gt[6];
   const bool georeferenced = GDALGetGeoTransform(h, gt) == CE_None && GDALGetSpatialRef(h) != nullptr;
 
   Imagery out;
   Dataset use;  // what is read: the source, or its warp onto the DEM's footprint
   if (georeferenced && hf.georef && !hf.georef->crs_wkt.empty()) {
-    const auto b = dem_bounds(hf);
+    const auto b = *hf.crs_bounds();  // the DEM's footprint: west, south, east, north
     // The image's own resolution over the DEM, capped: about its pixel size
     // in the DEM's CRS (GDAL's suggestion), at least the DEM's sample grid.
     double suggested[6];
@@ -102,23 +61,15 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
     const double sx = suggested[0], sx1 = suggested[0] + sw * suggested[1];
     const double sy = suggested[3] + sh * suggested[5], sy1 = suggested[3];
     if (sx1 <= b[0] || sx >= b[2] || sy1 <= b[1] || sy >= b[3])
-      throw DemError(path, "imagery does not overlap the DEM (imagery " + num(sx) + ".." + num(sx1) + " x " + num(sy) +
-                               ".." + num(sy1) + ", DEM " + num(b[0]) + ".." + num(b[2]) + " x " + num(b[1]) + ".." +
-                               num(b[3]) + " in the DEM's CRS)");
+      throw DemError(path, "imagery does not overlap the DEM (imagery " + number_arg(sx) + ".." + number_arg(sx1) + " x " + number_arg(sy) +
+                               ".." + number_arg(sy1) + ", DEM " + number_arg(b[0]) + ".." + number_arg(b[2]) + " x " + number_arg(b[1]) + ".." +
+                               number_arg(b[3]) + " in the DEM's CRS)");
     const double per_x = (b[2] - b[0]) / std::abs(suggested[1]), per_y = (b[3] - b[1]) / std::abs(suggested[5]);
     out.width = std::clamp(int(std::lround(per_x)), hf.width, max_side);
     out.height = std::clamp(int(std::lround(per_y)), hf.height, max_side);
-    const std::vector<std::string> args = {"-of", "MEM", "-t_srs", hf.georef->crs_wkt, "-te", num(b[0]), num(b[1]),
-                                           num(b[2]), num(b[3]), "-ts", std::to_string(out.width),
-                                           std::to_string(out.height), "-r", "bilinear", "-dstalpha"};
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    GDALWarpAppOptions* options = GDALWarpAppOptionsNew(argv.data(), nullptr);
-    int usage_error = 0;
-    CPLErrorReset();
-    use.reset(GDALWarp("", nullptr, 1, &h, options, &usage_error));
-    GDALWarpAppOptionsFree(options);
+    use = gdal::warp(h, "", {"-of", "MEM", "-t_srs", hf.georef->crs_wkt, "-te", number_arg(b[0]), number_arg(b[1]),
+                             number_arg(b[2]), number_arg(b[3]), "-ts", std::to_string(out.width),
+                             std::to_string(out.height), "-r", "bilinear", "-dstalpha"});
     if (!use) throw DemError(path, "imagery warp failed: " + last_error("unknown GDAL error"));
     out.warped = true;
   } else {
@@ -129,7 +80,7 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
                                " without georeferencing exceeds the texture limit " + std::to_string(max_side) +
                                " (give it georeferencing and it is resampled)");
   }
-  auto* ds = static_cast<GDALDatasetH>(use ? use.get() : src.get());
+  GDALDatasetH ds = handle(use ? use : src);
   auto rgb = read_rgb(ds, path);
   if (out.warped) {  // the destination alpha band says where the image covers the footprint
     const int bands = GDALGetRasterCount(ds);
