@@ -121,7 +121,6 @@ struct TwoLevelMethod::SizeMeshes {
   }
 };
 
-
 TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
     : scene_(scene),
       options_(options),
@@ -265,7 +264,6 @@ void TwoLevelMethod::update(const Camera& camera) {
                                                 {ec_i, ec_j}, controller_.ladder());
 
     n = controller_.update(ratio, p.ratio);
-
   } else {
     n = controller_.update(ratio);
   }
@@ -309,7 +307,7 @@ void TwoLevelMethod::update(const Camera& camera) {
                                         std::min(g1.y, hf.height - 1) * hf.spacing_y_m, mm.hi) - camera.position;
   band_visible_ = frustum.intersects_box(band_lo, band_hi);
   // The band target is cleared, drawn and read only inside the band's screen rectangle.
-  band_rect_ = screen_rect_of_box(camera, band_lo, band_hi, viewport_.x, viewport_.y);
+  if (!options_.band_inline) band_rect_ = screen_rect_of_box(camera, band_lo, band_hi, viewport_.x, viewport_.y);
   // The rest of the frame's CPU work, so it counts as LOD time: the seam
   // walls' heights (draw() uploads them) and which Level0 runs to draw.
   if (!visible_blocks_.empty()) update_walls(meshes_for(n, band_w_), n);
