@@ -102,6 +102,9 @@ def main():
                    "- command: `ig bench"):
         if needle not in md:
             fail(f"results.md lacks {needle!r}")
+    if sum(1 for r in rows if r["method"] == "twolevel") > 1 and \
+            "## Matched horizon error at every two-level setting" not in md:
+        fail("results.md lacks the per-setting matched table of a two-level sweep")
     for m in methods:
         if f"| {m} |" not in md:
             fail(f"results.md has no row for {m}")

@@ -215,6 +215,36 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
   for (size_t k = 0; k < wall.size(); ++k)
     o << "| " << wall[k].method << " | " << matched_ms_text(wall[k]) << " | " << how_text(wall[k].kind) << " | "
       << ratio_text(wall[k]) << " | " << matched_ms_text(cpu[k]) << " | " << ratio_text(cpu[k]) << " |\n";
+
+  // The same comparison at every two-level setting of a sweep, on CPU time.
+  std::vector<const BenchRow*> settings;
+  for (const auto& r : rows)
+    if (r.method == "twolevel") settings.push_back(&r);
+  if (settings.size() < 2) return;
+  o << "\n## Matched horizon error at every two-level setting\n\n"
+    << "CPU ms of each method at that setting's mean horizon error (matched as above) / the setting's own CPU ms "
+       "(> 1: two-level is faster; \"<=\" and \">\" as above).\n\n| two-level setting | horizon px | CPU ms |";
+  const auto header = match_horizon_error(rows, settings.front()->horizon_mean_px, &BenchRow::cpu_ms_median);
+  auto baseline = [](const MatchedRow& m) { return m.method != "twolevel" && m.method != "reference"; };
+  int columns = 0;
+  for (const auto& m : header)
+    if (baseline(m)) {
+      o << " " << m.method << " |";
+      ++columns;
+    }
+  o << "\n|---|---|---|";
+  for (int k = 0; k < columns; ++k) o << "---|";
+  o << "\n";
+  for (const BenchRow* t : settings) {
+    o << "| " << knob_text(*t) << " | " << fmt("%.2f", t->horizon_mean_px) << " | " << fmt("%.1f", t->cpu_ms_median)
+      << " |";
+    for (const auto& m : match_horizon_error(rows, t->horizon_mean_px, &BenchRow::cpu_ms_median)) {
+      if (!baseline(m)) continue;
+      const std::string prefix = m.kind == MatchKind::AtMost ? "<= " : m.kind == MatchKind::NotReached ? "> " : "";
+      o << " " << prefix << fmt("%.2f", t->cpu_ms_median > 0 ? m.frame_ms / t->cpu_ms_median : 0.0) << " |";
+    }
+    o << "\n";
+  }
 }
 
 bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>& rows,
