@@ -319,6 +319,13 @@ void TwoLevelMethod::update(const Camera& camera) {
                              return frustum.intersects_box(lo - camera.position, hi - camera.position);
                            },
                            level0_runs_[0], level0_runs_[1]);
+  // As glMultiDrawElements takes them (counts, byte offsets into the index buffer).
+  for (int k = 0; k < 2; ++k) {
+    draw_counts_[k].assign(level0_runs_[k].count.begin(), level0_runs_[k].count.end());
+    draw_offsets_[k].clear();
+    for (auto first : level0_runs_[k].first)
+      draw_offsets_[k].push_back(reinterpret_cast<const void*>(std::uintptr_t(first) * sizeof(std::uint32_t)));
+  }
 }
 
 void TwoLevelMethod::ensure_band_target(int width, int height) {
@@ -456,8 +463,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     glBindTextureUnit(2, beta_tex_.id());
     glBindVertexArray(level0_vao_.id());
     for (auto* program : {&level0_program_, &level0_clipped_program_}) {
-      const lod::IndexRuns& runs = level0_runs_[program == &level0_program_ ? 0 : 1];
-      if (!runs.count.empty() && !skipped("level0")) {
+      const int cls = program == &level0_program_ ? 0 : 1;
+      if (!draw_counts_[cls].empty() && !skipped("level0")) {
         program->use();
         scene_.bind_common(*program, camera);
         program->set("u_eye_sample", eye_sample);
@@ -476,12 +483,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
         program->set("u_level1_half", 0.5f * float(n - 1));
         program->set("u_near_far", glm::vec2(float(camera.near_m), float(camera.far_m)));
         program->set("u_band_tolerance_m", float(2.0 * level0_.max_error_m));
-        draw_counts_.assign(runs.count.begin(), runs.count.end());
-        draw_offsets_.clear();
-        for (auto first : runs.first)
-          draw_offsets_.push_back(reinterpret_cast<const void*>(std::uintptr_t(first) * sizeof(std::uint32_t)));
-        glMultiDrawElements(GL_TRIANGLES, draw_counts_.data(), GL_UNSIGNED_INT, draw_offsets_.data(),
-                            GLsizei(draw_counts_.size()));
+        glMultiDrawElements(GL_TRIANGLES, draw_counts_[cls].data(), GL_UNSIGNED_INT, draw_offsets_[cls].data(),
+                            GLsizei(draw_counts_[cls].size()));
         gl::count_draw();
       }
     }

@@ -109,8 +109,8 @@ class TwoLevelMethod final : public TerrainMethod {
   // [0] wholly outside the Level1 square, [1] across its edge.
   std::unique_ptr<lod::Level0Clusters> level0_clusters_;
   std::array<lod::IndexRuns, 2> level0_runs_;
-  std::vector<GLsizei> draw_counts_;
-  std::vector<const void*> draw_offsets_;
+  std::array<std::vector<GLsizei>, 2> draw_counts_;       // the runs as glMultiDrawElements takes them
+  std::array<std::vector<const void*>, 2> draw_offsets_;  // (filled in update())
   GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
   std::map<std::pair<int, int>, std::unique_ptr<SizeMeshes>> size_meshes_;
   lod::Level1SizeController controller_;
