@@ -14,11 +14,7 @@ std::optional<double> DrawnSurface::level0_height_at(double x_m, double y_m) {
   const glm::ivec2 o = method->level1_origin();
   const int n = method->level1_size();
   if (i >= o.x && j >= o.y && i <= o.x + n - 1 && j <= o.y + n - 1) return std::nullopt;
-  if (mesh_ != &method->level0() || !query_) {
-    mesh_ = &method->level0();
-    query_ = std::make_unique<lod::Level0HeightQuery>(*mesh_, hf.width, hf.height);
-  }
-  return query_->height_at(i, j);
+  return method->level0_heights().height_at(i, j);
 }
 
 }  // namespace ig::app

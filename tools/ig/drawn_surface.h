@@ -5,15 +5,7 @@
 // Level0 mesh outside it. Other methods: nullopt (answers stay full
 // resolution). Read on the frame loop's thread, after a frame was rendered.
 
-#include <memory>
 #include <optional>
-
-#include "lod/level0_height_query.h"
-#include "lod/roam_level0_mesh.h"
-
-namespace ig::render {
-class TerrainMethod;
-}
 
 namespace ig::app {
 
@@ -24,12 +16,11 @@ class DrawnSurface {
   explicit DrawnSurface(ScenarioRunner& runner) : runner_(runner) {}
   // Height drawn at terrain-local (x, y) where Level0 is drawn; nullopt
   // inside Level1 (the full-resolution surface) or without a two-level method.
+  // Reads the method's own Level0 height query, so a rebuilt method is followed.
   std::optional<double> level0_height_at(double x_m, double y_m);
 
  private:
   ScenarioRunner& runner_;
-  const lod::Level0Mesh* mesh_ = nullptr;  // the mesh query_ was built for (the method may be rebuilt)
-  std::unique_ptr<lod::Level0HeightQuery> query_;
 };
 
 }  // namespace ig::app

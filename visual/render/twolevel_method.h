@@ -84,6 +84,8 @@ class TwoLevelMethod final : public TerrainMethod {
   bool eye_guarded() const { return eye_guarded_; }
   const terrain::HeightPyramid& pyramid() const { return pyramid_; }
   const lod::Level0Mesh& level0() const { return level0_; }
+  // Level0's drawn height at a sample position (the walls use it; so do "as drawn" host answers).
+  const lod::Level0HeightQuery& level0_heights() const { return level0_heights_; }
   int band_width_samples() const { return band_w_; }
   void set_thresholds(double a1, double a2) { controller_.set_thresholds(a1, a2); }
 
