@@ -27,7 +27,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <string>
@@ -163,6 +165,44 @@ TEST_P(Methods, ImageErrorAgainstTheReferenceIsWithinTheMethodsOwnBound) {
   }
   RecordProperty("horizon_mean_px_worst", std::to_string(worst_mean));
   RecordProperty("horizon_max_minus_bound_px_worst", std::to_string(worst_excess));
+}
+
+// Back-face culling (on while the eye is above the terrain) must not change
+// the picture: every view here has the eye above the surface, so each method
+// draws with and without culling and compares. Allowed: a pixel whose centre
+// lies on a silhouette edge, which the rasteriser gives to the back face of
+// the pair (then the front face behind it, at the same depth to 1e-3, fills
+// it). Not allowed: any pixel turning sky or terrain (a culled skirt or wall).
+TEST_P(Methods, BackFaceCullingChangesNoPixel) {
+  const std::string name = GetParam();
+  auto& r = *runner_;
+  auto method = ig::render::make_method(name, r.scene(), std::string(IG_BIN_DIR) + "/shaders",
+                                        ig::app::twolevel_options(r.scenario().render.twolevel));
+  ig::render::FrameRenderer renderer(r.scene(), *method, std::string(IG_BIN_DIR) + "/shaders");
+  ig::gl::RenderTarget target(kW, kH);
+  constexpr long long kMaxSilhouettePixels = 8;  // of 76 800
+  for (int v = 0; v < kViewCount; ++v) {
+    const auto& camera = cameras_[v];
+    ig::stats::FrameImage images[2];
+    for (int cull = 0; cull < 2; ++cull) {
+      renderer.set_back_face_culling(cull == 1);
+      for (int k = 0; k < kSettle; ++k) renderer.render(camera, target);
+      images[cull] = ig::stats::read_frame_image(target);
+    }
+    long long differing = 0, coverage_changed = 0, far_depth = 0;
+    for (size_t p = 0; p < images[0].depth.size(); ++p) {
+      const float d0 = images[0].depth[p], d1 = images[1].depth[p];
+      if (d0 == d1 && std::memcmp(&images[0].rgba[4 * p], &images[1].rgba[4 * p], 4) == 0) continue;
+      ++differing;
+      if ((d0 > 0.0f) != (d1 > 0.0f))
+        ++coverage_changed;
+      else if (std::abs(d0 - d1) > 1e-3f * std::max(d0, d1))
+        ++far_depth;
+    }
+    EXPECT_EQ(coverage_changed, 0) << name << ", " << kViews[v].name << ": sky or terrain appeared with culling";
+    EXPECT_EQ(far_depth, 0) << name << ", " << kViews[v].name << ": another surface shows with culling";
+    EXPECT_LE(differing, kMaxSilhouettePixels) << name << ", " << kViews[v].name;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, Methods, ::testing::ValuesIn(methods_but_reference()),

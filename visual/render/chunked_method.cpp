@@ -55,7 +55,12 @@ ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shade
     for (int t = 0; t <= Q; ++t) low.push_back(vertex(edge(t).x, edge(t).y, side + 1));
     for (int t = 0; t < Q; ++t) {
       const std::uint32_t a = surface(edge(t).x, edge(t).y), b = surface(edge(t + 1).x, edge(t + 1).y);
-      idx.insert(idx.end(), {a, b, low[t + 1], a, low[t + 1], low[t]});
+      // Front faces outwards: a skirt is seen from the neighbouring chunk's
+      // side (where it covers a crack), so back-face culling keeps it.
+      if (side == 0 || side == 1)
+        idx.insert(idx.end(), {a, low[t + 1], b, a, low[t], low[t + 1]});
+      else
+        idx.insert(idx.end(), {a, b, low[t + 1], a, low[t + 1], low[t]});
     }
   }
   total_indices_ = GLsizei(idx.size());

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "terrain/back_faces_hidden.h"
+
 namespace ig::render {
 namespace {
 using Clock = std::chrono::steady_clock;
@@ -53,7 +55,15 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_GREATER);
-  glDisable(GL_CULL_FACE);  // an eye below the terrain still sees its underside
+  // Terrain faces are counter-clockwise seen from above. An eye under the
+  // surface sees their undersides, so they are culled only while it is above.
+  if (back_face_culling_ && terrain::back_faces_hidden(scene_.heightfield(), camera.position)) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
   glClearColor(0.f, 0.f, 0.f, 1.f);
   glClearDepth(0.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -72,6 +82,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   sky_.set("u_zenith", s.sky_zenith);
   sky_.set("u_horizon", s.sky_horizon);
   sky_.set("u_sun_dir", s.sun_direction);
+  glDisable(GL_CULL_FACE);
   glDepthFunc(GL_GEQUAL);  // only where the depth buffer still holds the clear value
   glDepthMask(GL_FALSE);
   glBindVertexArray(empty_vao_.id());

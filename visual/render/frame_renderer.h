@@ -38,6 +38,10 @@ class FrameRenderer {
   // Terrain drawn as lines (glPolygonMode GL_LINE) instead of filled; the sky stays filled.
   void set_wireframe(bool on) { wireframe_ = on; }
   bool wireframe() const { return wireframe_; }
+  // Back-face culling while the eye is above the terrain (terrain/back_faces_hidden.h;
+  // the picture is the same, hidden faces cost no fragment work). On by default;
+  // off draws every face, as for an eye under the surface.
+  void set_back_face_culling(bool on) { back_face_culling_ = on; }
   // Draw with another method from the next frame on (a rebuild at a frame
   // boundary): the sky program and the rest are kept, not recompiled.
   void set_method(TerrainMethod& method);
@@ -49,6 +53,7 @@ class FrameRenderer {
   gl::PassRecorder recorder_;
   gl::VertexArray empty_vao_;  // the sky's full-screen triangle needs no vertices
   bool wireframe_ = false;
+  bool back_face_culling_ = true;
 };
 
 }  // namespace ig::render

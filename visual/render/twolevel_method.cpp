@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "gl/gl_context.h"
+#include "gl/scoped_disable.h"
 #include "lod/level0_envelope.h"
 #include "lod/level1_coverage_predictor.h"
 
@@ -412,7 +413,10 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       grid_program_.set("u_origin", origin_);
       grid_program_.set("u_origin_rel", rel(origin_));
       glBindVertexArray(m.wall_vao.id());
-      glDrawElements(GL_TRIANGLES, m.wall_indices, GL_UNSIGNED_INT, nullptr);
+      {
+        const gl::ScopedDisable two_sided(GL_CULL_FACE);  // a wall is seen from inside or outside the square
+        glDrawElements(GL_TRIANGLES, m.wall_indices, GL_UNSIGNED_INT, nullptr);
+      }
       gl::count_draw();
       passes.push_back("level1");
     }
@@ -501,6 +505,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     glNamedFramebufferParameteri(count_fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, ch);
     glViewport(0, 0, cw, ch);
     glDisable(GL_DEPTH_TEST);
+    const gl::ScopedDisable no_culling(GL_CULL_FACE);
     count_program_.use();
     glBindTextureUnit(5, target.color_texture());
     count_program_.set("u_color", 5);
