@@ -287,8 +287,12 @@ TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
   require_object(j, path);
   check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride", "band", "eye_guard", "level0_envelope", "level0_error", "predict_size"});
   TwoLevelSpec t;
-  if (j.contains("level0_budget"))
-    t.level0_budget = static_cast<int>(get_integer(j["level0_budget"], child(path, "level0_budget"), 2, 10000000));
+  if (j.contains("level0_budget")) {
+    const auto& b = j["level0_budget"];
+    t.level0_budget = b.is_string() && b.get<std::string>() == "auto"
+                          ? 0
+                          : static_cast<int>(get_integer(b, child(path, "level0_budget") + " (a number or \"auto\")", 2, 10000000));
+  }
   if (j.contains("a1")) t.a1 = get_number_in(j["a1"], child(path, "a1"), 0.0, 1.0);
   if (j.contains("a2")) t.a2 = get_number_in(j["a2"], child(path, "a2"), 0.0, 1.0);
   if (!(t.a1 < t.a2)) fail(child(path, "a2"), "must be greater than a1 (a1 " + num(t.a1) + ", a2 " + num(t.a2) + ")");

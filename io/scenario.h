@@ -42,7 +42,9 @@ struct TerrainSpec {
 
 // Knobs of the two-level method (defaults: the paper's settings).
 struct TwoLevelSpec {
-  int level0_budget = 32768;  // Level0 ROAM triangles (docs/twolevel.md: why not the paper's 2048)
+  // Level0 ROAM triangles; 0 = "auto": from the finest channel's pixels per
+  // radian (lod/level0_budget.h), resolved by the scenario runner.
+  int level0_budget = 0;
   double a1 = 0.50;           // Level1 grows when R < a1
   double a2 = 0.80;           // Level1 shrinks when R > a2
   double alpha = 2000.0;      // band factor in w_trans = (r0 / r1) * alpha * w1

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "ig/scenario_runner.h"
+#include "lod/level0_budget.h"
 #include "render/frame_renderer.h"
 #include "render/terrain_method.h"
 #include "render/twolevel_method.h"
@@ -122,6 +123,22 @@ class Methods : public ::testing::TestWithParam<std::string> {
 std::unique_ptr<ScenarioRunner> Methods::runner_;
 std::map<int, ig::stats::FrameImage> Methods::reference_;
 std::map<int, ig::render::Camera> Methods::cameras_;
+
+// The scenario leaves Level0's budget on "auto": the runner resolves it from
+// the channel (240 rows over 45 degrees here).
+TEST(MethodsSetup, AutoLevel0BudgetIsResolvedFromTheChannel) {
+  ig::app::RunOptions o;
+  o.method = "reference";
+  o.headless = true;
+  o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
+  auto s = scenario();
+  ASSERT_EQ(s.render.twolevel.level0_budget, 0);
+  s.channels.push_back(ig::io::ChannelSpec{});
+  s.channels.back().fov_y_deg = 20.0;  // the finest channel decides
+  const ScenarioRunner runner(s, o);
+  EXPECT_EQ(runner.scenario().render.twolevel.level0_budget,
+            ig::lod::level0_budget_for_display(ig::lod::pixels_per_radian(kH, 20.0)));
+}
 
 TEST_P(Methods, ImageErrorAgainstTheReferenceIsWithinTheMethodsOwnBound) {
   const std::string name = GetParam();

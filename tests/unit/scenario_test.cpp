@@ -450,9 +450,15 @@ std::string with_twolevel(const std::string& body) {
 TEST(ScenarioTwoLevel, DefaultsAreThePapers) {
   const auto s = ig::io::parse_scenario(with_twolevel("{}"));
   EXPECT_EQ(s.render.method, "twolevel");
-  EXPECT_EQ(s.render.twolevel.level0_budget, 32768);
+  EXPECT_EQ(s.render.twolevel.level0_budget, 0);  // "auto"
   EXPECT_DOUBLE_EQ(s.render.twolevel.a1, 0.5);
   EXPECT_DOUBLE_EQ(s.render.twolevel.a2, 0.8);
+}
+
+TEST(ScenarioTwoLevel, Level0BudgetIsANumberOrAuto) {
+  EXPECT_EQ(ig::io::parse_scenario(with_twolevel(R"({"level0_budget": "auto"})")).render.twolevel.level0_budget, 0);
+  EXPECT_THROW(ig::io::parse_scenario(with_twolevel(R"({"level0_budget": "fine"})")), ig::io::ScenarioError);
+  EXPECT_THROW(ig::io::parse_scenario(with_twolevel(R"({"level0_budget": 1})")), ig::io::ScenarioError);
 }
 
 TEST(ScenarioTwoLevel, ReadsEveryKey) {

@@ -1,8 +1,10 @@
 #include "scenario_runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
+#include "lod/level0_budget.h"
 #include "render/twolevel_method.h"
 #include "scene_setup.h"
 
@@ -40,6 +42,12 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   if (options.method) r.method = *options.method;
   if (options.vsync) r.vsync = *options.vsync;
   if (options_.shader_dir.empty()) options_.shader_dir = gl::default_shader_dir();
+  if (r.twolevel.level0_budget == 0) {  // "auto": from the finest channel
+    double finest = 0.0;
+    for (const auto& c : scenario_.channels)
+      finest = std::max(finest, lod::pixels_per_radian(r.height, c.fov_y_deg.value_or(r.fov_y_deg)));
+    r.twolevel.level0_budget = lod::level0_budget_for_display(finest);
+  }
 
   auto t0 = Clock::now();
   heightfield_ = load_terrain(scenario_.terrain);

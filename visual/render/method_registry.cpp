@@ -50,7 +50,7 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, const Terrai
 }
 
 std::vector<double> knob_sweep(const std::string& name) {
-  if (name == "twolevel") return {2048, 8192, 32768, 131072};
+  if (name == "twolevel") return {2048, 32768, 131072, 524288, 1048576, 2097152};
   // The coarse ends reach the two-level default's horizon error on the
   // Table 2 flight, so matched-error times are interpolated, not bounded.
   if (name == "geomipmap" || name == "chunked") return {64, 32, 16, 8, 4, 2, 1};  // tau_px

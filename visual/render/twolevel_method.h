@@ -31,7 +31,7 @@
 namespace ig::render {
 
 struct TwoLevelOptions {
-  int level0_budget = 32768;      // Level0 triangles (the paper: 2048; docs/twolevel.md)
+  int level0_budget = 524288;     // Level0 triangles (the paper: 2048; scenarios default to "auto", lod/level0_budget.h)
   // Level1 also covers the ground under a low eye (see apply_eye_guard).
   bool eye_guard = true;
   double a1 = 0.50, a2 = 0.80;    // Level1 size thresholds on R
