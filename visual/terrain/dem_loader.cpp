@@ -7,6 +7,7 @@
 #include <cpl_error.h>
 #include <ogr_srs_api.h>
 
+#include <GeographicLib/Ellipsoid.hpp>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -456,14 +457,8 @@ DemError::DemError(const std::string& path, const std::string& reason)
     : std::runtime_error(one_line(path + ": " + reason)), path_(path), reason_(reason) {}
 
 MetresPerAngle metres_per_angle(double lat_deg, double a, double inv_f, double unit_rad) {
-  const double f = inv_f > 0 ? 1.0 / inv_f : 0.0;
-  const double e2 = f * (2.0 - f);
-  const double phi = lat_deg * (std::numbers::pi / 180.0);
-  const double s = std::sin(phi);
-  const double w2 = 1.0 - e2 * s * s;
-  const double meridian_radius = a * (1.0 - e2) / (w2 * std::sqrt(w2));
-  const double prime_vertical_radius = a / std::sqrt(w2);
-  return {meridian_radius * unit_rad, prime_vertical_radius * std::cos(phi) * unit_rad};
+  const GeographicLib::Ellipsoid ellipsoid(a, inv_f > 0 ? 1.0 / inv_f : 0.0);
+  return {ellipsoid.MeridionalCurvatureRadius(lat_deg) * unit_rad, ellipsoid.CircleRadius(lat_deg) * unit_rad};
 }
 
 Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
