@@ -106,33 +106,25 @@ std::vector<std::string> split_methods(const std::string& list) {
 
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  ArgReader r(a);
-  while (!r.done()) {
-    const std::string f = r.next();
-    if (f == "--methods") args.methods = split_methods(r.value(f));
-    else if (f == "--sweep") args.sweep = true;
-    else if (f == "--frames") args.frames = r.positive_int(f);
-    else if (f == "--size") {
-      int w = 0, h = 0;
-      r.size(f, w, h);
-      if (w > 16384 || h > 16384) throw UsageError("--size: at most 16384x16384");
-      args.width = w;
-      args.height = h;
-    } else if (f == "--fov") {
-      const double v = r.positive_double(f);
-      if (v > 179.0) throw UsageError("--fov: must be in (0, 179] degrees");
-      args.fov = v;
-    } else if (f == "--error-samples") args.error_samples = r.positive_int(f);
-    else if (f == "--match-px") args.match_px = r.positive_double(f);
-    else if (f == "--skip-pass") args.skip_passes.push_back(r.value(f));
-    else if (f == "--shader-dir") args.shader_dir = r.value(f);
-    else if (f == "--out") args.out_dir = r.value(f);
-    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
-    else if (args.scenario.empty()) args.scenario = f;
-    else throw UsageError("unexpected argument " + f);
-  }
+  CLI::App app("ig bench");
+  std::optional<std::string> methods;
+  app.add_option("scenario", args.scenario);
+  app.add_option("--methods", methods);
+  app.add_flag("--sweep", args.sweep);
+  app.add_option("--frames", args.frames)->check(positive_int());
+  add_size_option(app, "--size", args.width, args.height);
+  app.add_option("--fov", args.fov)->check(positive_number());
+  app.add_option("--error-samples", args.error_samples)->check(positive_int());
+  app.add_option("--match-px", args.match_px)->check(positive_number());
+  app.add_option("--skip-pass", args.skip_passes)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->expected(1)->allow_extra_args(false);
+  app.add_option("--shader-dir", args.shader_dir);
+  app.add_option("--out", args.out_dir);
+  parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (args.methods.empty()) args.methods = render::method_names();
+  if (args.width > 16384 || args.height > 16384) throw UsageError("--size: at most 16384x16384");
+  if (args.fov > 179.0) throw UsageError("--fov: must be in (0, 179] degrees");
+  args.methods = methods ? split_methods(*methods) : render::method_names();
   return args;
 }
 

@@ -37,35 +37,24 @@ struct Args {
 
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  ArgReader r(a);
-  bool window = false, headless = false;
-  while (!r.done()) {
-    const std::string f = r.next();
-    if (f == "--out") args.out_dir = r.value(f);
-    else if (f == "--frames") args.run.frames = r.positive_int(f);
-    else if (f == "--size") {
-      int w = 0, h = 0;
-      r.size(f, w, h);
-      args.run.width = w;
-      args.run.height = h;
-    } else if (f == "--method") args.run.method = r.value(f);
-    else if (f == "--recording") args.recording = r.value(f);
-    else if (f == "--headless") headless = true;
-    else if (f == "--window") window = true;
-    else if (f == "--fullscreen") args.run.fullscreen = window = true;
-    else if (f == "--vsync") {
-      const std::string v = r.value(f);
-      if (v != "on" && v != "off") throw UsageError("--vsync: expected on or off");
-      args.run.vsync = v == "on";
-    } else if (f == "--shader-dir") args.run.shader_dir = r.value(f);
-    else if (f == "--quiet") args.quiet = true;
-    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
-    else if (args.scenario.empty()) args.scenario = f;
-    else throw UsageError("unexpected argument " + f);
-  }
+  CLI::App app("ig run");
+  std::optional<std::string> vsync;
+  app.add_option("scenario", args.scenario);
+  app.add_option("--out", args.out_dir);
+  app.add_option("--frames", args.run.frames)->check(positive_int());
+  add_size_option(app, "--size", args.run.width, args.run.height);
+  app.add_option("--method", args.run.method);
+  app.add_option("--recording", args.recording);
+  auto* headless = app.add_flag("--headless");
+  auto* window = app.add_flag("--window")->excludes(headless);
+  app.add_flag("--fullscreen", args.run.fullscreen)->excludes(headless);
+  app.add_option("--vsync", vsync)->check(one_of({"on", "off"}));
+  app.add_option("--shader-dir", args.run.shader_dir);
+  app.add_flag("--quiet", args.quiet);
+  parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (window && headless) throw UsageError("--window and --headless exclude each other");
-  args.run.headless = !window;
+  if (vsync) args.run.vsync = *vsync == "on";
+  args.run.headless = !(window->count() || args.run.fullscreen);
   return args;
 }
 

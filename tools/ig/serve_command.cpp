@@ -80,54 +80,37 @@ struct Args {
 
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  ArgReader r(a);
-  bool window = false, headless = false;
-  while (!r.done()) {
-    const std::string f = r.next();
-    if (f == "--config") args.config = r.value(f);
-    else if (f == "--udp") args.udp = r.value(f);
-    else if (f == "--cigi") args.cigi = r.value(f);
-    else if (f == "--cigi-reply") args.cigi_reply = r.value(f);
-    else if (f == "--fgfdm") args.fgfdm = r.value(f);
-    else if (f == "--multicast") args.multicast = r.value(f);
-    else if (f == "--channel") args.channel = r.value(f);
-    else if (f == "--record") args.record = r.value(f);
-    else if (f == "--latency") {
-      args.latency = r.value(f);
-      if (!io::parse_latency_mode(*args.latency))
-        throw UsageError("--latency: expected smooth, latest or sync, got '" + *args.latency + "'");
-    }
-    else if (f == "--modbus") args.modbus = r.value(f);
-    else if (f == "--host-surface") {
-      const std::string v = r.value(f);
-      if (v != "full" && v != "drawn") throw UsageError("--host-surface: expected full or drawn, got '" + v + "'");
-      args.host_surface_drawn = v == "drawn";
-    }
-    else if (f == "--can") args.can = r.value(f);
-    else if (f == "--can-altitude") args.can_altitude = r.can_altitude_id(f);
-    else if (f == "--can-node") args.can_node = r.can_node(f);
-    else if (f == "--can-max-age-ms") args.can_max_age_ms = r.positive_double(f);
-    else if (f == "--out") args.out_dir = r.value(f);
-    else if (f == "--frames") args.frames = r.positive_int(f);
-    else if (f == "--seconds") args.seconds = r.positive_double(f);
-    else if (f == "--rate") args.rate_hz = r.positive_double(f);
-    else if (f == "--size") {
-      int w = 0, h = 0;
-      r.size(f, w, h);
-      args.run.width = w;
-      args.run.height = h;
-    } else if (f == "--method") args.run.method = r.value(f);
-    else if (f == "--headless") headless = true;
-    else if (f == "--window") window = true;
-    else if (f == "--quiet") args.quiet = true;
-    else throw UsageError("unknown option " + f);
-  }
-  if (window && headless) throw UsageError("--window and --headless exclude each other");
-  if (args.frames && args.seconds) throw UsageError("--frames and --seconds exclude each other");
-  if (args.cigi_reply && !args.cigi) throw UsageError("--cigi-reply needs --cigi");
+  CLI::App app("ig serve");
+  std::optional<std::string> host_surface;
+  app.add_option("--config", args.config);
+  app.add_option("--udp", args.udp);
+  auto* cigi = app.add_option("--cigi", args.cigi);
+  app.add_option("--cigi-reply", args.cigi_reply)->needs(cigi);
+  app.add_option("--fgfdm", args.fgfdm);
+  app.add_option("--multicast", args.multicast);
+  app.add_option("--channel", args.channel);
+  app.add_option("--record", args.record);
+  app.add_option("--latency", args.latency)->check(one_of({"smooth", "latest", "sync"}));
+  app.add_option("--modbus", args.modbus);
+  app.add_option("--host-surface", host_surface)->check(one_of({"full", "drawn"}));
+  app.add_option("--can", args.can);
+  app.add_option("--can-altitude", args.can_altitude)->check(can_altitude_id());
+  app.add_option("--can-node", args.can_node)->check(can_node_id());
+  app.add_option("--can-max-age-ms", args.can_max_age_ms)->check(positive_number());
+  app.add_option("--out", args.out_dir);
+  auto* frames = app.add_option("--frames", args.frames)->check(positive_int());
+  app.add_option("--seconds", args.seconds)->check(positive_number())->excludes(frames);
+  app.add_option("--rate", args.rate_hz)->check(positive_number());
+  add_size_option(app, "--size", args.run.width, args.run.height);
+  app.add_option("--method", args.run.method);
+  auto* headless = app.add_flag("--headless");
+  auto* window = app.add_flag("--window")->excludes(headless);
+  app.add_flag("--quiet", args.quiet);
+  parse_command_line(app, a);
   if (!args.udp && !args.cigi && !args.fgfdm && !args.can)
     throw UsageError("no pose source: give --udp, --cigi, --fgfdm or --can");
-  args.run.headless = !window;
+  args.host_surface_drawn = host_surface == "drawn";
+  args.run.headless = !window->count();
   if (args.modbus) check_modbus_endpoint(*args.modbus);
   return args;
 }
