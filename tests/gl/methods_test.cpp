@@ -125,7 +125,7 @@ TEST_P(Methods, ImageErrorAgainstTheReferenceIsWithinTheMethodsOwnBound) {
   const std::string name = GetParam();
   auto& r = *runner_;
   auto method = ig::render::make_method(name, r.scene(), std::string(IG_BIN_DIR) + "/shaders",
-                                        ig::app::twolevel_options(r.scenario().render.twolevel));
+                                        r.scenario().render.twolevel);
   ig::render::FrameRenderer renderer(r.scene(), *method, std::string(IG_BIN_DIR) + "/shaders");
   ig::gl::RenderTarget target(kW, kH);
   const auto knob = method->knob();

@@ -272,7 +272,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
     const auto& s = runner.scenario();
     const auto& hf = runner.heightfield();
     const int width = s.render.width, height = s.render.height;
-    render::TwoLevelOptions tl_options = twolevel_options(s.render.twolevel);
+    render::TwoLevelOptions tl_options = s.render.twolevel;
     tl_options.skip_passes = args.skip_passes;
 
     const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);

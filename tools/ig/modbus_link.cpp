@@ -39,7 +39,7 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   if (u.rebuild && (c.alpha != active_.alpha || c.level0_budget != active_.level0_budget)) {
     // Level0 and the band width are built with the method: rebuild it now,
     // at the frame boundary (this frame pays the Level0 build).
-    io::TwoLevelSpec t = runner_.scenario().render.twolevel;
+    options::TwoLevelOptions t = runner_.scenario().render.twolevel;
     t.alpha = c.alpha;
     t.level0_budget = int(c.level0_budget);
     t.a1 = c.a1;

@@ -50,9 +50,6 @@ struct FrameResult {
   double pose_ms = 0.0;
 };
 
-// The scenario's two-level settings as method options (what make_method takes).
-render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& spec);
-
 // The frame's work counters as log columns: totals (vs_invocations,
 // fs_invocations, primitives, draw_calls, upload_bytes), then with per_pass
 // <pass>_vs, <pass>_fs, <pass>_prims, <pass>_draws for every pass.
@@ -92,7 +89,7 @@ class ScenarioRunner {
   // Rebuilds every channel's LOD method with new two-level settings (Level0
   // budget, band factor, ...) at a frame boundary: Level0 is built again, so
   // that frame takes the build time (docs/results.md).
-  void rebuild_method(const io::TwoLevelSpec& twolevel);
+  void rebuild_method(const options::TwoLevelOptions& twolevel);
   // Windowed: the user closed the window (polls events). Headless: false.
   bool window_closed() { return context_->should_close(); }
   // The camera render_frame / render_pose use for a pose on a channel
