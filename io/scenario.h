@@ -57,7 +57,7 @@ struct RenderSpec {
   double frame_budget_ms = 16.667;     // frames slower than this are counted
   bool vsync = true;                   // windowed only
   // Earth curvature drop (docs/scenario.md): "auto" = on for georeferenced
-  // terrain spanning more than 5 km (app::earth_radius_for), "on", "off".
+  // terrain spanning more than 5 km (session::earth_radius_for), "on", "off".
   std::string earth_curvature = "auto";
   options::TwoLevelOptions twolevel;  // render.twolevel
 };

@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "ig/scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "render/frame_renderer.h"
 #include "render/terrain_method.h"
 #include "render/twolevel_method.h"
@@ -41,7 +41,7 @@
 
 namespace {
 
-using ig::app::ScenarioRunner;
+using ig::session::ScenarioRunner;
 using ig::io::PathKey;
 using ig::io::Scenario;
 
@@ -100,7 +100,7 @@ std::vector<std::string> methods_but_reference() {
 class Methods : public ::testing::TestWithParam<std::string> {
  protected:
   static void SetUpTestSuite() {
-    ig::app::RunOptions o;
+    ig::session::RunOptions o;
     o.method = "reference";
     o.headless = true;
     o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";

@@ -27,7 +27,7 @@
 #include "gl/shader_program.h"
 #include "render/frame_renderer.h"
 #include "render/twolevel_method.h"
-#include "scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "stats/frame_log.h"
 #include "stats/image_error.h"
 
@@ -262,13 +262,13 @@ int run_bench_command(const std::vector<std::string>& argv) {
       scenario.render.fov_y_deg = *args.fov;
       scenario.channels[0].fov_y_deg.reset();
     }
-    RunOptions run;
+    session::RunOptions run;
     run.width = args.width;
     run.height = args.height;
     run.method = "reference";
     run.headless = true;
     run.shader_dir = args.shader_dir.empty() ? gl::default_shader_dir() : args.shader_dir;
-    ScenarioRunner runner(std::move(scenario), run);
+    session::ScenarioRunner runner(std::move(scenario), run);
     const auto& s = runner.scenario();
     const auto& hf = runner.heightfield();
     const int width = s.render.width, height = s.render.height;
@@ -352,7 +352,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
                                               {"terrain_ms", vr.timings.terrain_ms},
                                               {"sky_ms", vr.timings.sky_ms},
                                               {"triangles", vr.method.triangles}};
-        append_work_columns(frame_row, vr, /*per_pass=*/false);
+        session::append_work_columns(frame_row, vr, /*per_pass=*/false);
         frames_csv.add_row(frame_row);
         if (next_sample < sample_pos.size() && sample_pos[next_sample] == i) {
           ++next_sample;

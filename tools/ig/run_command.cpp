@@ -15,9 +15,9 @@
 #include "cli_args.h"
 #include "commands.h"
 #include "io/recording.h"
-#include "pose_feed.h"
-#include "run_outputs.h"
-#include "scenario_runner.h"
+#include "session/pose_feed.h"
+#include "session/run_outputs.h"
+#include "session/scenario_runner.h"
 
 namespace ig::app {
 namespace {
@@ -30,7 +30,7 @@ constexpr const char* kUsage =
 struct Args {
   std::string scenario;
   std::string out_dir;
-  RunOptions run;
+  session::RunOptions run;
   std::optional<std::string> recording;  // replay recorded datagrams instead of the path
   bool quiet = false;
 };
@@ -70,13 +70,13 @@ int run_run_command(const std::vector<std::string>& argv) {
     const fs::path out = args.out_dir.empty() ? fs::path("out") / scenario.name : fs::path(args.out_dir);
     fs::create_directories(out);
 
-    ScenarioRunner runner(std::move(scenario), args.run);
+    session::ScenarioRunner runner(std::move(scenario), args.run);
     const auto& s = runner.scenario();
 
     // A recording replaces the scripted path: its datagrams go through the
     // same decoders and filter as live, on a simulated clock (deterministic).
     std::vector<io::RecordedDatagram> records;
-    std::optional<PoseFeed> feed;
+    std::optional<session::PoseFeed> feed;
     double t0 = 0.0;
     int frames = runner.frame_count();
     if (args.recording) {
@@ -94,11 +94,11 @@ int run_run_command(const std::vector<std::string>& argv) {
       if (const int k = std::min(int(std::lround(t / s.time_step_s)), io::scenario_frame_count(s) - 1); k < frames)
         capture_frames.insert(k);
 
-    RunOutputs outputs(out, "ig run", !args.quiet && isatty(STDERR_FILENO));
+    session::RunOutputs outputs(out, "ig run", !args.quiet && isatty(STDERR_FILENO));
     size_t next_record = 0;
     for (int k = 0; k < frames; ++k) {
       if (!runner.context().headless() && runner.window_closed()) break;
-      FrameResult f;
+      session::FrameResult f;
       if (feed) {
         const double now = t0 + k * s.time_step_s;
         for (; next_record < records.size() && records[next_record].receive_time_s <= now; ++next_record)

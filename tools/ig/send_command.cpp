@@ -29,7 +29,7 @@
 #include "io/wire/cigi.h"
 #include "io/wire/fgnetfdm.h"
 #include "io/wire/native.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 namespace ig::app {
 namespace {
@@ -153,9 +153,9 @@ int run_send_command(const std::vector<std::string>& argv) {
   const Args& args = *parsed;
   try {
     const io::Scenario scenario = io::load_scenario(args.scenario);
-    const terrain::Heightfield hf = load_terrain(scenario.terrain);
-    const io::PathInterpolator path(place_path(scenario.path, hf));
-    const auto to_geodetic = local_to_geodetic(hf);
+    const terrain::Heightfield hf = session::load_terrain(scenario.terrain);
+    const io::PathInterpolator path(session::place_path(scenario.path, hf));
+    const auto to_geodetic = session::local_to_geodetic(hf);
     // CANaerospace carries latitude / longitude only; the FD pose is like native.
     const bool canaerospace = args.can && !args.can_fd;
     const std::string format = args.can ? (args.can_fd ? "canfd" : "canaerospace") : io::protocol_name(args.protocol);

@@ -22,16 +22,16 @@
 
 #include "cli_args.h"
 #include "commands.h"
-#include "drawn_surface.h"
+#include "session/drawn_surface.h"
 #include "host_services.h"
 #include "io/host_view_control.h"
 #include "io/net/udp_socket.h"
 #include "io/recording.h"
 #include "io/wire/cigi.h"
-#include "pose_feed.h"
-#include "run_outputs.h"
-#include "scenario_runner.h"
-#include "scene_setup.h"
+#include "session/pose_feed.h"
+#include "session/run_outputs.h"
+#include "session/scenario_runner.h"
+#include "session/scene_setup.h"
 #include "serve_plugins.h"
 
 namespace ig::app {
@@ -74,7 +74,7 @@ struct Args {
   std::optional<int> frames;
   std::optional<double> seconds;
   double rate_hz = 60.0;
-  RunOptions run;
+  session::RunOptions run;
   bool quiet = false;
 };
 
@@ -166,8 +166,8 @@ int run_serve_command(const std::vector<std::string>& argv) {
     std::unique_ptr<io::RecordingWriter> recorder;
     if (args.record) recorder = std::make_unique<io::RecordingWriter>(*args.record);
 
-    ScenarioRunner runner(std::move(scenario), args.run);
-    PoseFeed feed(runner.heightfield());
+    session::ScenarioRunner runner(std::move(scenario), args.run);
+    session::PoseFeed feed(runner.heightfield());
     feed.set_latency_mode(latency);
     if (!feed.georeferenced())
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
@@ -184,10 +184,10 @@ int run_serve_command(const std::vector<std::string>& argv) {
     std::unique_ptr<HostServices> services;
     if (cigi_reply || args.udp)
       services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
-                                                geodetic_placer(runner.heightfield()),
-                                                local_to_geodetic(runner.heightfield()), HostServicesOptions{},
+                                                session::geodetic_placer(runner.heightfield()),
+                                                session::local_to_geodetic(runner.heightfield()), HostServicesOptions{},
                                                 &runner.scene().height_pyramid());
-    DrawnSurface drawn(runner);
+    session::DrawnSurface drawn(runner);
     if (services && args.host_surface_drawn)
       services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
     std::unique_ptr<ControlSurface> control;  // Modbus
@@ -199,7 +199,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
 
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
-    RunOutputs outputs(out, "ig serve", !args.quiet && isatty(STDERR_FILENO));
+    session::RunOutputs outputs(out, "ig serve", !args.quiet && isatty(STDERR_FILENO));
     const double period = 1.0 / args.rate_hz;
     const double start = io::net::steady_now_s();
     double next_tick = start;
@@ -292,7 +292,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
       if (const std::string w = feed.take_outside_warning(); !w.empty()) std::cerr << "ig serve: " << w << "\n";
       last_pose = pose;
       const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
+      const session::FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
       const double complete = io::net::steady_now_s();  // the renderer ends with glFinish
       feed.frame_complete(complete);
       display_lead_s += 0.1 * (std::min(complete - frame_start, 2.0 * period) - display_lead_s);

@@ -19,7 +19,7 @@
 #include "stats/frame_log.h"
 #include "terrain/heightfield.h"
 
-namespace ig::app {
+namespace ig::session {
 
 struct RunOptions {
   std::optional<int> frames;          // overrides the scenario's duration
@@ -109,4 +109,4 @@ class ScenarioRunner {
   int frame_count_ = 0;
 };
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -1,12 +1,12 @@
-#include "scenario_runner.h"
+#include "session/scenario_runner.h"
 
 #include <chrono>
 #include <cmath>
 
 #include "render/twolevel_method.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
-namespace ig::app {
+namespace ig::session {
 namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
@@ -155,4 +155,4 @@ void ScenarioRunner::present() {
   }
 }
 
-}  // namespace ig::app
+}  // namespace ig::session
