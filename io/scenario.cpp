@@ -283,10 +283,10 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   return t;
 }
 
-TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
+options::TwoLevelOptions parse_twolevel(const json& j, const std::string& path) {
   require_object(j, path);
   check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride", "band", "eye_guard", "level0_envelope", "level0_error", "predict_size"});
-  TwoLevelSpec t;
+  options::TwoLevelOptions t;
   if (j.contains("level0_budget")) {
     const auto& b = j["level0_budget"];
     t.level0_budget = b.is_string() && b.get<std::string>() == "auto"
@@ -297,7 +297,8 @@ TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
   if (j.contains("a2")) t.a2 = get_number_in(j["a2"], child(path, "a2"), 0.0, 1.0);
   if (!(t.a1 < t.a2)) fail(child(path, "a2"), "must be greater than a1 (a1 " + num(t.a1) + ", a2 " + num(t.a2) + ")");
   if (j.contains("alpha")) t.alpha = get_positive(j["alpha"], child(path, "alpha"), 1e9);
-  if (j.contains("beta")) t.beta = get_choice(j["beta"], child(path, "beta"), {"linear", "gaussian"});
+  if (j.contains("beta"))
+    t.gaussian_beta = get_choice(j["beta"], child(path, "beta"), {"linear", "gaussian"}) == "gaussian";
   if (j.contains("max_level1")) {
     const std::string p = child(path, "max_level1");
     const long long n = get_integer(j["max_level1"], p, 33, 1025);
@@ -305,9 +306,9 @@ TwoLevelSpec parse_twolevel(const json& j, const std::string& path) {
     t.max_level1 = static_cast<int>(n);
   }
   if (j.contains("band_stride")) t.band_stride = static_cast<int>(get_integer(j["band_stride"], child(path, "band_stride"), 1, 64));
-  if (j.contains("band")) t.band = get_choice(j["band"], child(path, "band"), {"inline", "target"});
+  if (j.contains("band")) t.band_inline = get_choice(j["band"], child(path, "band"), {"inline", "target"}) == "inline";
   if (j.contains("level0_error"))
-    t.level0_error = get_choice(j["level0_error"], child(path, "level0_error"), {"midpoint", "whole"});
+    t.level0_whole_error = get_choice(j["level0_error"], child(path, "level0_error"), {"midpoint", "whole"}) == "whole";
   if (j.contains("eye_guard")) t.eye_guard = get_bool(j["eye_guard"], child(path, "eye_guard"));
   if (j.contains("level0_envelope"))
     t.level0_envelope = get_bool(j["level0_envelope"], child(path, "level0_envelope"));

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "options/twolevel_options.h"
+
 namespace ig::io {
 
 struct ScenarioError : std::runtime_error {
@@ -40,24 +42,6 @@ struct TerrainSpec {
   std::optional<GeneratorSpec> generator;
 };
 
-// Knobs of the two-level method (defaults: the paper's settings).
-struct TwoLevelSpec {
-  // Level0 ROAM triangles; 0 = "auto": from the finest channel's pixels per
-  // radian (lod/level0_budget.h), resolved by the scenario runner.
-  int level0_budget = 0;
-  double a1 = 0.50;           // Level1 grows when R < a1
-  double a2 = 0.80;           // Level1 shrinks when R > a2
-  double alpha = 2000.0;      // band factor in w_trans = (r0 / r1) * alpha * w1
-  std::string beta = "linear";  // band weight template: linear | gaussian
-  int max_level1 = 1025;      // top of the Level1 ladder (33, 65, ..., 1025)
-  int band_stride = 2;        // band geometry every k samples
-  std::string band = "inline";  // band uv1 / beta: inline (in Level0's shader) | target (the paper's separate pass)
-  bool eye_guard = true;      // Level1 also covers the ground under a low eye
-  bool level0_envelope = false;  // Level0 lifted to a conservative upper envelope (no sky through it)
-  std::string level0_error = "midpoint";  // Level0 refinement error: midpoint (nested, the paper's) | whole (whole triangle)
-  bool predict_size = true;      // Level1 size from a ray-cast prediction of R (false: the paper's steps)
-};
-
 struct RenderSpec {
   int width = 640;
   int height = 480;
@@ -73,9 +57,9 @@ struct RenderSpec {
   double frame_budget_ms = 16.667;     // frames slower than this are counted
   bool vsync = true;                   // windowed only
   // Earth curvature drop (docs/scenario.md): "auto" = on for georeferenced
-  // terrain spanning more than 5 km (app::earth_radius_for), "on", "off".
+  // terrain spanning more than 5 km (session::earth_radius_for), "on", "off".
   std::string earth_curvature = "auto";
-  TwoLevelSpec twolevel;
+  options::TwoLevelOptions twolevel;  // render.twolevel
 };
 
 struct ChannelSpec {

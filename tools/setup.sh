@@ -9,6 +9,7 @@ packages=(
   # libraries (found by CMake)
   libglfw3-dev libglm-dev libepoxy-dev libegl-dev libopenimageio-dev libgdal-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev zlib1g-dev
+  libcli11-dev libgeographiclib-dev
   # headless OpenGL (Mesa llvmpipe through EGL) and the windowed path under Xvfb
   libegl-mesa0 libgl1-mesa-dri xvfb xauth
   # frame-time plots

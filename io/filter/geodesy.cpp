@@ -1,13 +1,17 @@
 #include "io/filter/geodesy.h"
 
 #include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <GeographicLib/Ellipsoid.hpp>
+#include <GeographicLib/Geocentric.hpp>
+#include <glm/geometric.hpp>
 
 namespace ig::io::geo {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-constexpr double kEp2 = kWgs84E2 / (1.0 - kWgs84E2);  // second eccentricity squared
+constexpr double kDeg = std::numbers::pi / 180.0;
 
 double wrap_lon(double lon_deg) {
   double l = std::fmod(lon_deg, 360.0);  // (-360, 360)
@@ -18,56 +22,34 @@ double wrap_lon(double lon_deg) {
 
 }  // namespace
 
+// ECEF, its inverse, the ENU axes and the radii of curvature are
+// GeographicLib's (Geocentric, Ellipsoid); this file only adapts the types.
+
 glm::dvec3 geodetic_to_ecef(const Geodetic& g) {
-  const double phi = g.lat_deg * kDeg;
-  const double lam = g.lon_deg * kDeg;
-  const double sp = std::sin(phi), cp = std::cos(phi);
-  const double n = kWgs84A / std::sqrt(1.0 - kWgs84E2 * sp * sp);  // prime-vertical radius
-  const double r = (n + g.height_m) * cp;
-  return {r * std::cos(lam), r * std::sin(lam), (n * (1.0 - kWgs84E2) + g.height_m) * sp};
+  glm::dvec3 e;
+  GeographicLib::Geocentric::WGS84().Forward(g.lat_deg, g.lon_deg, g.height_m, e.x, e.y, e.z);
+  return e;
 }
 
 Geodetic ecef_to_geodetic(const glm::dvec3& e) {
   Geodetic out;
-  const double p = std::hypot(e.x, e.y);
-  out.lon_deg = (p > 0.0) ? std::atan2(e.y, e.x) / kDeg : 0.0;
-  // Bowring: iterate on the parametric (reduced) latitude beta. Each step
-  // gains about three orders of magnitude near the surface; 4 steps reach
-  // double precision for all terrestrial and orbital heights.
-  const double a = kWgs84A, b = kWgs84B;
-  double beta = std::atan2(e.z * a, p * b);
-  double phi = 0.0;
-  for (int it = 0; it < 5; ++it) {
-    const double sb = std::sin(beta), cb = std::cos(beta);
-    phi = std::atan2(e.z + kEp2 * b * sb * sb * sb, p - kWgs84E2 * a * cb * cb * cb);
-    const double beta_next = std::atan2((1.0 - kWgs84F) * std::sin(phi), std::cos(phi));
-    if (std::fabs(beta_next - beta) < 1e-15) {
-      beta = beta_next;
-      break;
-    }
-    beta = beta_next;
-  }
-  out.lat_deg = phi / kDeg;
-  // Height along the normal; well conditioned at all latitudes (no 1/cos).
-  const double sp = std::sin(phi), cp = std::cos(phi);
-  const double n = a / std::sqrt(1.0 - kWgs84E2 * sp * sp);
-  out.height_m = p * cp + e.z * sp - n * (1.0 - kWgs84E2 * sp * sp);
+  GeographicLib::Geocentric::WGS84().Reverse(e.x, e.y, e.z, out.lat_deg, out.lon_deg, out.height_m);
+  out.lon_deg = wrap_lon(out.lon_deg);  // GeographicLib's [-180, 180] -> (-180, 180]
   return out;
 }
 
 EnuFrame::EnuFrame(const Geodetic& origin) : origin_(origin) {
-  origin_ecef_ = geodetic_to_ecef(origin);
-  const double phi = origin.lat_deg * kDeg, lam = origin.lon_deg * kDeg;
-  const double sp = std::sin(phi), cp = std::cos(phi), sl = std::sin(lam), cl = std::cos(lam);
-  east_ = {-sl, cl, 0.0};
-  north_ = {-sp * cl, -sp * sl, cp};
-  up_ = {cp * cl, cp * sl, sp};
+  // M turns local east-north-up into ECEF: its columns are the axes.
+  std::vector<double> m(9);
+  GeographicLib::Geocentric::WGS84().Forward(origin.lat_deg, origin.lon_deg, origin.height_m, origin_ecef_.x,
+                                             origin_ecef_.y, origin_ecef_.z, m);
+  east_ = {m[0], m[3], m[6]};
+  north_ = {m[1], m[4], m[7]};
+  up_ = {m[2], m[5], m[8]};
 }
 
 glm::dvec3 EnuFrame::ecef_dir_to_enu(const glm::dvec3& d) const {
-  return {east_.x * d.x + east_.y * d.y + east_.z * d.z,
-          north_.x * d.x + north_.y * d.y + north_.z * d.z,
-          up_.x * d.x + up_.y * d.y + up_.z * d.z};
+  return {glm::dot(east_, d), glm::dot(north_, d), glm::dot(up_, d)};
 }
 
 glm::dvec3 EnuFrame::enu_dir_to_ecef(const glm::dvec3& d) const {
@@ -83,12 +65,8 @@ glm::dvec3 EnuFrame::enu_to_ecef(const glm::dvec3& enu) const {
 }
 
 MetresPerDegree metres_per_degree(double lat_deg) {
-  const double phi = lat_deg * kDeg;
-  const double s = std::sin(phi);
-  const double w2 = 1.0 - kWgs84E2 * s * s;
-  const double meridian = kWgs84A * (1.0 - kWgs84E2) / (w2 * std::sqrt(w2));
-  const double prime_vertical = kWgs84A / std::sqrt(w2);
-  return {meridian * kDeg, prime_vertical * std::cos(phi) * kDeg};
+  const GeographicLib::Ellipsoid& wgs84 = GeographicLib::Ellipsoid::WGS84();
+  return {wgs84.MeridionalCurvatureRadius(lat_deg) * kDeg, wgs84.CircleRadius(lat_deg) * kDeg};
 }
 
 std::optional<GeographicGrid> GeographicGrid::make(const std::array<double, 6>& g, double sx,

@@ -1,6 +1,7 @@
 #pragma once
-// WGS84 geodesy in double precision, pure math (no GDAL), allocation-free:
-// the fast path for per-packet pose intake at 60 Hz and more.
+// WGS84 geodesy in double precision (GeographicLib's Geocentric and
+// Ellipsoid, no GDAL): the fast path for per-packet pose intake at 60 Hz and
+// more (the per-pose conversions do not allocate).
 //
 //   geodetic (lat, lon, h)  <->  ECEF (earth-centred, earth-fixed, metres)
 //   ECEF                    <->  local ENU (east, north, up) at a reference point
@@ -34,10 +35,8 @@ struct Geodetic {
 };
 
 glm::dvec3 geodetic_to_ecef(const Geodetic& g);
-// Iterative (Bowring) inversion; converges to < 1e-12 deg and < 1e-7 m within
-// a few iterations for heights from -100 km to 10000 km. At the poles the
-// longitude is 0 (undefined there). Not meant for points near the earth's
-// centre (|ecef| < 1000 km): returns lat 0 / the reduced height there.
+// GeographicLib's closed-form inversion (accurate to about 1e-9 m for all
+// terrestrial and orbital heights); longitude in (-180, 180], 0 at the poles.
 Geodetic ecef_to_geodetic(const glm::dvec3& ecef);
 
 // Local east-north-up tangent frame at a reference point. Construct once per
@@ -62,9 +61,9 @@ class EnuFrame {
   glm::dvec3 east_{1, 0, 0}, north_{0, 1, 0}, up_{0, 0, 1};  // unit axes in ECEF
 };
 
-// Radii of curvature of the WGS84 ellipsoid at a latitude, and metres per
-// degree along the meridian / the parallel (the same formula the DEM loader
-// uses for geographic rasters, terrain::metres_per_angle).
+// Metres per degree along the meridian / the parallel of the WGS84 ellipsoid
+// at a latitude (GeographicLib's radii of curvature, as the DEM loader's
+// terrain::metres_per_angle for geographic rasters).
 struct MetresPerDegree {
   double north = 0.0;  // meridian radius * pi/180
   double east = 0.0;   // prime-vertical radius * cos(lat) * pi/180

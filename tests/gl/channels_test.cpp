@@ -5,14 +5,14 @@
 
 #include <cmath>
 
-#include "ig/scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "io/scenario.h"
 #include "render/twolevel_method.h"
 
 namespace {
 
-ig::app::RunOptions small(const std::string& method) {
-  ig::app::RunOptions o;
+ig::session::RunOptions small(const std::string& method) {
+  ig::session::RunOptions o;
   o.headless = true;
   o.method = method;
   o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
@@ -20,7 +20,7 @@ ig::app::RunOptions small(const std::string& method) {
 }
 
 TEST(Channels, NeighbouringViewsShareTheirEdgeRays) {
-  ig::app::ScenarioRunner runner(ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/three_channels.json"),
+  ig::session::ScenarioRunner runner(ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/three_channels.json"),
                                  small("reference"));
   runner.render_frame(0);
   auto& ch = runner.channels();
@@ -49,7 +49,7 @@ TEST(Channels, NeighbouringViewsShareTheirEdgeRays) {
 }
 
 TEST(Channels, EachChannelHasItsOwnLodState) {
-  ig::app::ScenarioRunner runner(ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/three_channels.json"),
+  ig::session::ScenarioRunner runner(ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/three_channels.json"),
                                  small("twolevel"));
   runner.render_frame(0);
   auto& ch = runner.channels();

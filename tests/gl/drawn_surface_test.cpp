@@ -8,18 +8,18 @@
 #include <random>
 #include <stdexcept>
 
-#include "ig/drawn_surface.h"
+#include "session/drawn_surface.h"
 #include "ig/host_services.h"
-#include "ig/scenario_runner.h"
-#include "ig/scene_setup.h"
+#include "session/scenario_runner.h"
+#include "session/scene_setup.h"
 #include "io/scenario.h"
 #include "render/twolevel_method.h"
 
 namespace {
 
-using ig::app::DrawnSurface;
-using ig::app::RunOptions;
-using ig::app::ScenarioRunner;
+using ig::session::DrawnSurface;
+using ig::session::RunOptions;
+using ig::session::ScenarioRunner;
 
 TEST(DrawnSurface, Level1IsFullResolutionAndLevel0IsTheMesh) {
   RunOptions o;
@@ -30,7 +30,7 @@ TEST(DrawnSurface, Level1IsFullResolutionAndLevel0IsTheMesh) {
   o.frames = 1;
   o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
   ScenarioRunner runner(ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json"), o);
-  const ig::app::FrameResult f = runner.render_frame(0);
+  const ig::session::FrameResult f = runner.render_frame(0);
   auto* method = dynamic_cast<ig::render::TwoLevelMethod*>(&runner.method());
   ASSERT_NE(method, nullptr);
   const auto& hf = runner.heightfield();
@@ -63,10 +63,10 @@ TEST(DrawnSurface, Level1IsFullResolutionAndLevel0IsTheMesh) {
   EXPECT_GT(largest_gap, 1.0);
 
   // HostServices answers HOT from the drawn surface when asked to.
-  ig::app::HostServices services(hf, runner.scene().earth_radius_m(), ig::app::geodetic_placer(hf),
-                                 ig::app::local_to_geodetic(hf), {}, &runner.scene().height_pyramid());
+  ig::app::HostServices services(hf, runner.scene().earth_radius_m(), ig::session::geodetic_placer(hf),
+                                 ig::session::local_to_geodetic(hf), {}, &runner.scene().height_pyramid());
   services.set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
-  const auto to_geo = ig::app::local_to_geodetic(hf);
+  const auto to_geo = ig::session::local_to_geodetic(hf);
   ASSERT_TRUE(to_geo);
   ig::io::wire::HatHotRequest inside, outside;
   inside.type = outside.type = ig::io::wire::HatHotType::Hot;

@@ -35,8 +35,8 @@
 #include <string>
 #include <vector>
 
-#include "ig/scenario_runner.h"
 #include "lod/level0_budget.h"
+#include "session/scenario_runner.h"
 #include "render/frame_renderer.h"
 #include "render/terrain_method.h"
 #include "render/twolevel_method.h"
@@ -44,7 +44,7 @@
 
 namespace {
 
-using ig::app::ScenarioRunner;
+using ig::session::ScenarioRunner;
 using ig::io::PathKey;
 using ig::io::Scenario;
 
@@ -103,7 +103,7 @@ std::vector<std::string> methods_but_reference() {
 class Methods : public ::testing::TestWithParam<std::string> {
  protected:
   static void SetUpTestSuite() {
-    ig::app::RunOptions o;
+    ig::session::RunOptions o;
     o.method = "reference";
     o.headless = true;
     o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
@@ -127,7 +127,7 @@ std::map<int, ig::render::Camera> Methods::cameras_;
 // The scenario leaves Level0's budget on "auto": the runner resolves it from
 // the channel (240 rows over 45 degrees here).
 TEST(MethodsSetup, AutoLevel0BudgetIsResolvedFromTheChannel) {
-  ig::app::RunOptions o;
+  ig::session::RunOptions o;
   o.method = "reference";
   o.headless = true;
   o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
@@ -144,7 +144,7 @@ TEST_P(Methods, ImageErrorAgainstTheReferenceIsWithinTheMethodsOwnBound) {
   const std::string name = GetParam();
   auto& r = *runner_;
   auto method = ig::render::make_method(name, r.scene(), std::string(IG_BIN_DIR) + "/shaders",
-                                        ig::app::twolevel_options(r.scenario().render.twolevel));
+                                        r.scenario().render.twolevel);
   ig::render::FrameRenderer renderer(r.scene(), *method, std::string(IG_BIN_DIR) + "/shaders");
   ig::gl::RenderTarget target(kW, kH);
   const auto knob = method->knob();
@@ -194,7 +194,7 @@ TEST_P(Methods, BackFaceCullingChangesNoPixel) {
   const std::string name = GetParam();
   auto& r = *runner_;
   auto method = ig::render::make_method(name, r.scene(), std::string(IG_BIN_DIR) + "/shaders",
-                                        ig::app::twolevel_options(r.scenario().render.twolevel));
+                                        r.scenario().render.twolevel);
   ig::render::FrameRenderer renderer(r.scene(), *method, std::string(IG_BIN_DIR) + "/shaders");
   ig::gl::RenderTarget target(kW, kH);
   constexpr long long kMaxSilhouettePixels = 8;  // of 76 800

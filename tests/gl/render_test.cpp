@@ -5,14 +5,14 @@
 #include <cmath>
 
 #include "io/scenario.h"
-#include "ig/scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "terrain/height_pyramid.h"
 #include "terrain/ray_cast.h"
 
 namespace {
 
-using ig::app::RunOptions;
-using ig::app::ScenarioRunner;
+using ig::session::RunOptions;
+using ig::session::ScenarioRunner;
 
 constexpr int kW = 320, kH = 240;
 
@@ -116,7 +116,7 @@ TEST(DefaultScenario, EveryFrameOfTheRunIsLogged) {
   EXPECT_EQ(runner.frame_count(), 3);
   for (int k = 0; k < runner.frame_count(); ++k) {
     const auto f = runner.render_frame(k);
-    const auto row = ig::app::frame_log_row(f, runner.channels().front(), 0.0, 0.0);
+    const auto row = ig::session::frame_log_row(f, runner.channels().front(), 0.0, 0.0);
     ASSERT_GE(row.size(), 10u);
     EXPECT_EQ(row[0].name, "frame");
     EXPECT_EQ(row[0].text, std::to_string(k));

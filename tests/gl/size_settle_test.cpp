@@ -7,13 +7,13 @@
 #include <cstdio>
 #include <vector>
 
-#include "ig/scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "io/scenario.h"
 #include "render/twolevel_method.h"
 
 namespace {
-using ig::app::RunOptions;
-using ig::app::ScenarioRunner;
+using ig::session::RunOptions;
+using ig::session::ScenarioRunner;
 
 ig::io::PathKey key(double t, double x, double y, double z, double heading, double pitch) {
   ig::io::PathKey k;

@@ -25,7 +25,7 @@
 #include <glm/geometric.hpp>
 
 #include "capture/png_writer.h"
-#include "ig/scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "io/pose.h"
 #include "io/scenario.h"
 #include "lod/level1_size_controller.h"
@@ -34,8 +34,8 @@
 
 namespace {
 
-using ig::app::RunOptions;
-using ig::app::ScenarioRunner;
+using ig::session::RunOptions;
+using ig::session::ScenarioRunner;
 using ig::io::AltitudeMode;
 using ig::io::PathKey;
 using ig::io::Scenario;

@@ -6,13 +6,13 @@
 #include <cstdio>
 
 #include "gl/work_counters.h"
-#include "ig/scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "io/scenario.h"
 #include "render/terrain_method.h"
 
 namespace {
-using ig::app::RunOptions;
-using ig::app::ScenarioRunner;
+using ig::session::RunOptions;
+using ig::session::ScenarioRunner;
 
 constexpr int kW = 160, kH = 120;
 

@@ -10,7 +10,7 @@
 
 #include <cstdio>
 
-#include "ig/scene_setup.h"
+#include "session/scene_setup.h"
 #include "io/scenario.h"
 #include "lod/look_at_point.h"
 #include "robustness_support.h"
@@ -263,17 +263,17 @@ TEST(EarthCurvature, ScenarioOptionAndDefault) {
   file.file = "dem.tif";
   generated.generator = ig::io::GeneratorSpec{};
   auto hf = robustness::flat_terrain(257, 30.0, 0.0f);  // 7.7 km
-  EXPECT_EQ(ig::app::earth_radius_for(r, file, hf), 0.0) << "auto: a DEM without georeference stays flat";
+  EXPECT_EQ(ig::session::earth_radius_for(r, file, hf), 0.0) << "auto: a DEM without georeference stays flat";
   hf.georef = ig::terrain::make_geographic_georef(46.5, 7.9, hf.spacing_x_m, hf.spacing_y_m);
-  EXPECT_EQ(ig::app::earth_radius_for(r, file, hf), kEarthRadiusM) << "auto: georeferenced file wider than 5 km";
-  EXPECT_EQ(ig::app::earth_radius_for(r, generated, hf), 0.0) << "auto: generated terrain is a flat synthetic world";
+  EXPECT_EQ(ig::session::earth_radius_for(r, file, hf), kEarthRadiusM) << "auto: georeferenced file wider than 5 km";
+  EXPECT_EQ(ig::session::earth_radius_for(r, generated, hf), 0.0) << "auto: generated terrain is a flat synthetic world";
   auto small = robustness::flat_terrain(101, 30.0, 0.0f);  // 3 km
   small.georef = hf.georef;
-  EXPECT_EQ(ig::app::earth_radius_for(r, file, small), 0.0) << "auto: georeferenced but under 5 km";
+  EXPECT_EQ(ig::session::earth_radius_for(r, file, small), 0.0) << "auto: georeferenced but under 5 km";
   r.earth_curvature = "on";
-  EXPECT_EQ(ig::app::earth_radius_for(r, generated, small), kEarthRadiusM);
+  EXPECT_EQ(ig::session::earth_radius_for(r, generated, small), kEarthRadiusM);
   r.earth_curvature = "off";
-  EXPECT_EQ(ig::app::earth_radius_for(r, file, hf), 0.0);
+  EXPECT_EQ(ig::session::earth_radius_for(r, file, hf), 0.0);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
 #include "io/wire/native_query.h"
-#include "ig/scene_setup.h"
+#include "session/scene_setup.h"
 #include "terrain/georef.h"
 
 namespace {
@@ -37,8 +37,8 @@ struct Fixture {
   ig::terrain::Heightfield hf = make_terrain();
   HostServices services;
   explicit Fixture(HostServicesOptions o = {})
-      : services(hf, 0.0, ig::app::geodetic_placer(hf), ig::app::local_to_geodetic(hf), o) {}
-  glm::dvec3 geodetic(double x, double y, double z) { return *ig::app::local_to_geodetic(hf)(glm::dvec3(x, y, z)); }
+      : services(hf, 0.0, ig::session::geodetic_placer(hf), ig::session::local_to_geodetic(hf), o) {}
+  glm::dvec3 geodetic(double x, double y, double z) { return *ig::session::local_to_geodetic(hf)(glm::dvec3(x, y, z)); }
 };
 
 template <typename... Packets>
@@ -135,7 +135,7 @@ TEST(HostServices, LosSegmentHitAndClearInGeodetic) {
   ASSERT_TRUE(h.valid && h.range_valid);
   EXPECT_FALSE(h.visible);
   // The hit point, back in local metres, lies on the surface and on the segment.
-  const glm::dvec3 p = *ig::app::geodetic_placer(f.hf)(h.point.x, h.point.y, h.point.z);
+  const glm::dvec3 p = *ig::session::geodetic_placer(f.hf)(h.point.x, h.point.y, h.point.z);
   EXPECT_NEAR(p.z, f.hf.sample_surface(p.x, p.y), 1e-6);
   const glm::dvec3 from(200, 200, 1000), to(1500, 1500, 0);
   EXPECT_NEAR(glm::length(p - from), h.range_m, 1e-6);

@@ -469,11 +469,11 @@ TEST(ScenarioTwoLevel, ReadsEveryKey) {
   EXPECT_DOUBLE_EQ(t.a1, 0.4);
   EXPECT_DOUBLE_EQ(t.a2, 0.9);
   EXPECT_DOUBLE_EQ(t.alpha, 500);
-  EXPECT_EQ(t.beta, "gaussian");
+  EXPECT_TRUE(t.gaussian_beta);
   EXPECT_EQ(t.max_level1, 513);
   EXPECT_EQ(t.band_stride, 1);
-  EXPECT_EQ(t.band, "target");
-  EXPECT_EQ(t.level0_error, "whole");
+  EXPECT_FALSE(t.band_inline);
+  EXPECT_TRUE(t.level0_whole_error);
 }
 
 TEST(ScenarioTwoLevel, BadValuesNameTheirKey) {

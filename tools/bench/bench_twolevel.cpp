@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "ig/scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "lod/projected_area.h"
 #include "render/twolevel_method.h"
 #include "stats/frame_log.h"
@@ -44,7 +44,7 @@ struct Row {
 // The paper's projected-area ratio for the last frame: the screen areas of
 // the two levels' triangles (Level1's grid, Level0's triangles outside the
 // square), each clipped to the view, summed with hidden parts included.
-double projected_area_ratio(ig::app::ScenarioRunner& runner, const ig::render::TwoLevelMethod& tl) {
+double projected_area_ratio(ig::session::ScenarioRunner& runner, const ig::render::TwoLevelMethod& tl) {
   const auto& ch = runner.channels()[0];
   const auto camera = runner.scene().local_camera(ch.camera);
   const auto& hf = runner.heightfield();
@@ -136,12 +136,12 @@ int main(int argc, char** argv) {
   s.render.twolevel.eye_guard = !no_guard;
 
   std::vector<Row> rows(pitches.size());
-  ig::app::RunOptions o;
+  ig::session::RunOptions o;
   o.headless = true;
   try {
     {
       o.method = "twolevel";
-      ig::app::ScenarioRunner runner(s, o);
+      ig::session::ScenarioRunner runner(s, o);
       auto* tl = dynamic_cast<ig::render::TwoLevelMethod*>(&runner.method());
       std::printf("renderer: %s | %s\n", runner.context().gl_renderer().c_str(), runner.context().gl_version().c_str());
       std::printf("dem: %s (%dx%d), Level0: %d triangles built in %.0f ms, max error %.0f m\n",
@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
     }
     if (ref_frames > 0) {
       o.method = "reference";
-      ig::app::ScenarioRunner runner(s, o);
+      ig::session::ScenarioRunner runner(s, o);
       for (size_t k = 0; k < pitches.size(); ++k) {
         std::vector<double> ms;
         for (int f = 0; f < ref_frames; ++f) {

@@ -27,7 +27,7 @@
 #include "gl/shader_program.h"
 #include "render/frame_renderer.h"
 #include "render/twolevel_method.h"
-#include "scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "stats/frame_log.h"
 #include "stats/image_error.h"
 
@@ -106,33 +106,25 @@ std::vector<std::string> split_methods(const std::string& list) {
 
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  ArgReader r(a);
-  while (!r.done()) {
-    const std::string f = r.next();
-    if (f == "--methods") args.methods = split_methods(r.value(f));
-    else if (f == "--sweep") args.sweep = true;
-    else if (f == "--frames") args.frames = r.positive_int(f);
-    else if (f == "--size") {
-      int w = 0, h = 0;
-      r.size(f, w, h);
-      if (w > 16384 || h > 16384) throw UsageError("--size: at most 16384x16384");
-      args.width = w;
-      args.height = h;
-    } else if (f == "--fov") {
-      const double v = r.positive_double(f);
-      if (v > 179.0) throw UsageError("--fov: must be in (0, 179] degrees");
-      args.fov = v;
-    } else if (f == "--error-samples") args.error_samples = r.positive_int(f);
-    else if (f == "--match-px") args.match_px = r.positive_double(f);
-    else if (f == "--skip-pass") args.skip_passes.push_back(r.value(f));
-    else if (f == "--shader-dir") args.shader_dir = r.value(f);
-    else if (f == "--out") args.out_dir = r.value(f);
-    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
-    else if (args.scenario.empty()) args.scenario = f;
-    else throw UsageError("unexpected argument " + f);
-  }
+  CLI::App app("ig bench");
+  std::optional<std::string> methods;
+  app.add_option("scenario", args.scenario);
+  app.add_option("--methods", methods);
+  app.add_flag("--sweep", args.sweep);
+  app.add_option("--frames", args.frames)->check(positive_int());
+  add_size_option(app, "--size", args.width, args.height);
+  app.add_option("--fov", args.fov)->check(positive_number());
+  app.add_option("--error-samples", args.error_samples)->check(positive_int());
+  app.add_option("--match-px", args.match_px)->check(positive_number());
+  app.add_option("--skip-pass", args.skip_passes)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->expected(1)->allow_extra_args(false);
+  app.add_option("--shader-dir", args.shader_dir);
+  app.add_option("--out", args.out_dir);
+  parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (args.methods.empty()) args.methods = render::method_names();
+  if (args.width > 16384 || args.height > 16384) throw UsageError("--size: at most 16384x16384");
+  if (args.fov > 179.0) throw UsageError("--fov: must be in (0, 179] degrees");
+  args.methods = methods ? split_methods(*methods) : render::method_names();
   return args;
 }
 
@@ -270,17 +262,17 @@ int run_bench_command(const std::vector<std::string>& argv) {
       scenario.render.fov_y_deg = *args.fov;
       scenario.channels[0].fov_y_deg.reset();
     }
-    RunOptions run;
+    session::RunOptions run;
     run.width = args.width;
     run.height = args.height;
     run.method = "reference";
     run.headless = true;
     run.shader_dir = args.shader_dir.empty() ? gl::default_shader_dir() : args.shader_dir;
-    ScenarioRunner runner(std::move(scenario), run);
+    session::ScenarioRunner runner(std::move(scenario), run);
     const auto& s = runner.scenario();
     const auto& hf = runner.heightfield();
     const int width = s.render.width, height = s.render.height;
-    render::TwoLevelOptions tl_options = twolevel_options(s.render.twolevel);
+    render::TwoLevelOptions tl_options = s.render.twolevel;
     tl_options.skip_passes = args.skip_passes;
 
     const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
@@ -360,7 +352,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
                                               {"terrain_ms", vr.timings.terrain_ms},
                                               {"sky_ms", vr.timings.sky_ms},
                                               {"triangles", vr.method.triangles}};
-        append_work_columns(frame_row, vr, /*per_pass=*/false);
+        session::append_work_columns(frame_row, vr, /*per_pass=*/false);
         frames_csv.add_row(frame_row);
         if (next_sample < sample_pos.size() && sample_pos[next_sample] == i) {
           ++next_sample;

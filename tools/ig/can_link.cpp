@@ -18,7 +18,7 @@ class CanLink final : public ExtraPoseSource {
     can_ = std::make_unique<io::can::CanPoseSource>(o);
   }
 
-  void poll(PoseFeed& feed) override {
+  void poll(session::PoseFeed& feed) override {
     can_->poll([&](const io::wire::PoseMessage& m, double t, io::can::CanFormat fmt) {
       feed.intake().handle_pose(fmt == io::can::CanFormat::CanFd ? io::Protocol::CanFd : io::Protocol::CanAerospace,
                                 m, t);

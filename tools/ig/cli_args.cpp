@@ -1,11 +1,32 @@
 #include "cli_args.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
 #include "gl/shader_program.h"
 
 namespace ig::app {
+namespace {
+
+// A CLI11 validator from a check that throws UsageError("flag: reason"):
+// CLI11 prefixes the option's name itself, so only the reason is kept.
+template <class Check>
+CLI::Validator validator(const char* description, Check check) {
+  return CLI::Validator(
+      [check](std::string& value) -> std::string {
+        try {
+          check(value);
+          return {};
+        } catch (const UsageError& e) {
+          const std::string what = e.what();
+          return what.substr(what.find(": ") + 2);
+        }
+      },
+      description);
+}
+
+}  // namespace
 
 int parse_positive_int(const std::string& flag, const std::string& v) {
   size_t used = 0;
@@ -32,46 +53,81 @@ double parse_double(const std::string& flag, const std::string& v) {
   return d;
 }
 
-const std::string& ArgReader::value(const std::string& flag) {
-  if (done()) throw UsageError(flag + ": missing value");
-  return next();
+void parse_command_line(CLI::App& app, const std::vector<std::string>& argv) {
+  app.set_help_flag();
+  app.allow_extras();
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  try {
+    app.parse(std::vector<std::string>(argv.rbegin(), argv.rend()));
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what());
+  }
+  for (const std::string& extra : app.remaining()) {
+    if (!extra.empty() && extra[0] == '-') throw UsageError("unknown option " + extra);
+    throw UsageError("unexpected argument " + extra);
+  }
 }
 
-int ArgReader::positive_int(const std::string& flag) { return parse_positive_int(flag, value(flag)); }
-
-int ArgReader::can_node(const std::string& flag) {
-  const std::string& v = value(flag);
-  char* end = nullptr;
-  const long n = std::strtol(v.c_str(), &end, 10);
-  if (v.empty() || *end || n < 0 || n > 255) throw UsageError(flag + ": expected 0..255, got '" + v + "'");
-  return int(n);
+const CLI::Validator& positive_int() {
+  static const CLI::Validator v = validator("N>0", [](const std::string& s) { parse_positive_int("", s); });
+  return v;
 }
 
-int ArgReader::can_altitude_id(const std::string& flag) {
-  const int id = positive_int(flag);
-  if (id != 320 && id != 322 && id != 332)
-    throw UsageError(flag + ": expected 320, 322 or 332, got " + std::to_string(id));
-  return id;
+const CLI::Validator& positive_number() {
+  static const CLI::Validator v = validator("X>0", [](const std::string& s) {
+    if (!(parse_double("", s) > 0)) throw UsageError(": must be > 0");
+  });
+  return v;
 }
 
-double ArgReader::positive_double(const std::string& flag) {
-  const double d = parse_double(flag, value(flag));
-  if (!(d > 0)) throw UsageError(flag + ": must be > 0");
-  return d;
+const CLI::Validator& probability() {
+  static const CLI::Validator v = validator("P in [0, 1]", [](const std::string& s) {
+    const double d = parse_double("", s);
+    if (!(d >= 0 && d <= 1)) throw UsageError(": must be in [0, 1]");
+  });
+  return v;
 }
 
-double ArgReader::probability(const std::string& flag) {
-  const double d = parse_double(flag, value(flag));
-  if (!(d >= 0 && d <= 1)) throw UsageError(flag + ": must be in [0, 1]");
-  return d;
+const CLI::Validator& can_node_id() {
+  static const CLI::Validator v = validator("0..255", [](const std::string& s) {
+    char* end = nullptr;
+    const long n = std::strtol(s.c_str(), &end, 10);
+    if (s.empty() || *end || n < 0 || n > 255) throw UsageError(": expected 0..255, got '" + s + "'");
+  });
+  return v;
 }
 
-void ArgReader::size(const std::string& flag, int& width, int& height) {
-  const std::string v = value(flag);
-  const auto x = v.find('x');
-  if (x == std::string::npos) throw UsageError(flag + ": expected WxH, got '" + v + "'");
-  width = parse_positive_int(flag, v.substr(0, x));
-  height = parse_positive_int(flag, v.substr(x + 1));
+const CLI::Validator& can_altitude_id() {
+  static const CLI::Validator v = validator("320|322|332", [](const std::string& s) {
+    const int id = parse_positive_int("", s);
+    if (id != 320 && id != 322 && id != 332)
+      throw UsageError(": expected 320, 322 or 332, got " + std::to_string(id));
+  });
+  return v;
+}
+
+CLI::Validator one_of(std::vector<std::string> choices) {
+  std::string list;
+  for (size_t k = 0; k < choices.size(); ++k)
+    list += (k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + choices[k];
+  return validator(list.c_str(), [choices, list](const std::string& s) {
+    if (std::find(choices.begin(), choices.end(), s) == choices.end())
+      throw UsageError(": expected " + list + ", got '" + s + "'");
+  });
+}
+
+CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::optional<int>& width,
+                             std::optional<int>& height) {
+  return app.add_option_function<std::string>(name, [name, &width, &height](const std::string& v) {
+    const auto x = v.find('x');
+    width = parse_positive_int(name, v.substr(0, x));
+    height = parse_positive_int(name, v.substr(x + 1));
+  })->check(validator("WxH", [](const std::string& v) {
+    const auto x = v.find('x');
+    if (x == std::string::npos) throw UsageError(": expected WxH, got '" + v + "'");
+    parse_positive_int("", v.substr(0, x));
+    parse_positive_int("", v.substr(x + 1));
+  }));
 }
 
 std::string default_scenario_file() {

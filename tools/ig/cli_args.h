@@ -1,12 +1,15 @@
 #pragma once
-// Small helpers shared by the subcommands' argument parsing: one place for
-// value checks and their error messages.
+// The subcommands' command lines, parsed by CLI11: the checks every command
+// shares (as CLI11 validators, so a bad value reads "--flag: reason") and one
+// way to run the parse. Each command keeps its own usage text (--help).
 
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 namespace ig::app {
 
@@ -40,33 +43,31 @@ auto parse_or_usage(const char* command, const char* usage, Parse parse, const s
   }
 }
 
-class ArgReader {
- public:
-  explicit ArgReader(const std::vector<std::string>& args) : args_(args) {}
-  bool done() const { return k_ >= args_.size(); }
-  const std::string& next() { return args_[k_++]; }
-  // The value after `flag`; UsageError when missing.
-  const std::string& value(const std::string& flag);
-  int positive_int(const std::string& flag);
-  double positive_double(const std::string& flag);
-  double probability(const std::string& flag);  // [0, 1]
-  // CAN options shared by ig serve and ig send: a node id 0..255, and the
-  // CANaerospace altitude id 320, 322 or 332.
-  int can_node(const std::string& flag);
-  int can_altitude_id(const std::string& flag);
-  // "WxH" into width/height.
-  void size(const std::string& flag, int& width, int& height);
+// Parses argv with the options and positionals `app` declares. Given twice,
+// an option's last value counts. Throws UsageError on any mistake: CLI11's
+// message, or "unknown option X" / "unexpected argument X" for what nothing
+// declared. No generated --help: the caller prints its usage text.
+void parse_command_line(CLI::App& app, const std::vector<std::string>& argv);
 
- private:
-  const std::vector<std::string>& args_;
-  size_t k_ = 0;
-};
+// Value checks shared by the commands, as CLI11 validators.
+const CLI::Validator& positive_int();     // 1 .. 1e9
+const CLI::Validator& positive_number();  // finite, > 0
+const CLI::Validator& probability();      // [0, 1]
+const CLI::Validator& can_node_id();      // 0 .. 255 (ig serve and ig send --can-node)
+const CLI::Validator& can_altitude_id();  // CANaerospace 320, 322 or 332
+// One of `choices`: "expected a, b or c, got 'x'".
+CLI::Validator one_of(std::vector<std::string> choices);
+
+// "WxH" into width / height (each a positive integer).
+CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::optional<int>& width,
+                             std::optional<int>& height);
 
 int parse_positive_int(const std::string& flag, const std::string& text);
+double parse_double(const std::string& flag, const std::string& text);
+
 // ig serve's config when none is given: the installed scenarios/default.json
 // (PREFIX/share/ig/scenarios), else the one beside the build's binary, else
 // the source tree's.
 std::string default_scenario_file();
-double parse_double(const std::string& flag, const std::string& text);
 
 }  // namespace ig::app

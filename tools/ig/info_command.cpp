@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cli_args.h"
 #include "ig/commands.h"
 #include "terrain/dem_loader.h"
 
@@ -35,10 +36,6 @@ constexpr const char* kUsage =
     "  --spacing M   sample spacing in metres (images have none; default 1)\n"
     "Exit status: 0 ok, 1 the file could not be loaded, 2 bad arguments.\n";
 
-struct UsageError {
-  std::string message;
-};
-
 double parse_number(const std::string& option, const std::string& text) {
   double v = 0.0;
   const char* first = text.data();
@@ -46,7 +43,7 @@ double parse_number(const std::string& option, const std::string& text) {
   if (!text.empty() && *first == '+') ++first;
   const auto res = std::from_chars(first, last, v);
   if (text.empty() || res.ec != std::errc() || res.ptr != last || !std::isfinite(v))
-    throw UsageError{option + " needs a number, got '" + text + "'"};
+    throw UsageError(option + " needs a number, got '" + text + "'");
   return v;
 }
 
@@ -77,55 +74,53 @@ class SilenceStderr {
   int saved_ = -1;
 };
 
+// The DEM file and its load options from the command line; UsageError (one
+// line, no usage text) on a mistake.
+std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOptions& opts) {
+  CLI::App app("ig info");
+  std::vector<std::string> files;
+  std::optional<std::string> encoding, scale, offset, spacing;
+  app.add_option("file", files);
+  app.add_option("--encoding", encoding);
+  app.add_option("--scale", scale);
+  app.add_option("--offset", offset);
+  app.add_option("--spacing", spacing);
+  try {
+    parse_command_line(app, args);
+  } catch (const UsageError& e) {
+    const std::string what = e.what();
+    throw UsageError(what.rfind("unknown option", 0) == 0 ? what + " (try ig info --help)" : what);
+  }
+  if (encoding) {
+    if (*encoding != "auto" && *encoding != "terrain-rgb" && *encoding != "png16" && *encoding != "gdal")
+      throw UsageError("--encoding must be auto, terrain-rgb, png16 or gdal, got '" + *encoding + "'");
+    opts.encoding = *encoding;
+  }
+  if (scale) opts.scale = parse_number("--scale", *scale);
+  if (offset) opts.offset = parse_number("--offset", *offset);
+  if (spacing) {
+    const double s = parse_number("--spacing", *spacing);
+    if (!(s > 0)) throw UsageError("--spacing must be a positive number of metres");
+    opts.spacing_m = s;
+  }
+  if (files.size() > 1) throw UsageError("more than one FILE given ('" + files[0] + "', '" + files[1] + "')");
+  if (files.empty()) throw UsageError("missing FILE (usage: ig info FILE [options]; see --help)");
+  return files[0];
+}
+
 }  // namespace
 
 int run_info_command(const std::vector<std::string>& args) {
-  std::optional<std::string> file;
+  if (help_requested(args)) {
+    std::cout << kUsage;
+    return 0;
+  }
   terrain::DemLoadOptions opts;
+  std::string file;
   try {
-    for (std::size_t k = 0; k < args.size(); ++k) {
-      const std::string& a = args[k];
-      if (a == "--help" || a == "-h") {
-        std::cout << kUsage;
-        return 0;
-      }
-      if (a.rfind("--", 0) == 0) {
-        std::string name = a, value;
-        bool has_value = false;
-        if (const auto eq = a.find('='); eq != std::string::npos) {
-          name = a.substr(0, eq);
-          value = a.substr(eq + 1);
-          has_value = true;
-        }
-        if (name != "--encoding" && name != "--scale" && name != "--offset" &&
-            name != "--spacing")
-          throw UsageError{"unknown option " + name + " (try ig info --help)"};
-        if (!has_value) {
-          if (k + 1 >= args.size()) throw UsageError{name + " needs a value"};
-          value = args[++k];
-        }
-        if (name == "--encoding") {
-          if (value != "auto" && value != "terrain-rgb" && value != "png16" && value != "gdal")
-            throw UsageError{"--encoding must be auto, terrain-rgb, png16 or gdal, got '" +
-                             value + "'"};
-          opts.encoding = value;
-        } else if (name == "--scale") {
-          opts.scale = parse_number(name, value);
-        } else if (name == "--offset") {
-          opts.offset = parse_number(name, value);
-        } else {
-          const double s = parse_number(name, value);
-          if (!(s > 0)) throw UsageError{"--spacing must be a positive number of metres"};
-          opts.spacing_m = s;
-        }
-        continue;
-      }
-      if (file) throw UsageError{"more than one FILE given ('" + *file + "', '" + a + "')"};
-      file = a;
-    }
-    if (!file) throw UsageError{"missing FILE (usage: ig info FILE [options]; see --help)"};
+    file = parse_args(args, opts);
   } catch (const UsageError& e) {
-    std::cerr << "ig info: " << e.message << "\n";
+    std::cerr << "ig info: " << e.what() << "\n";
     return 2;
   }
 
@@ -133,7 +128,7 @@ int run_info_command(const std::vector<std::string>& args) {
     terrain::Heightfield hf;
     {
       SilenceStderr quiet;
-      hf = terrain::load_dem(*file, opts);
+      hf = terrain::load_dem(file, opts);
     }
     std::cout << terrain::dem_info_json(hf) << "\n";
     std::cout.flush();

@@ -10,7 +10,7 @@
 
 namespace ig::app {
 
-ModbusLink::ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet)
+ModbusLink::ModbusLink(const std::string& endpoint, session::ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet)
     : runner_(runner), quiet_(quiet) {
   const auto& r = runner.scenario().render;
   active_.a1 = float(r.twolevel.a1);
@@ -39,7 +39,7 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   if (u.rebuild && (c.alpha != active_.alpha || c.level0_budget != active_.level0_budget)) {
     // Level0 and the band width are built with the method: rebuild it now,
     // at the frame boundary (this frame pays the Level0 build).
-    io::TwoLevelSpec t = runner_.scenario().render.twolevel;
+    options::TwoLevelOptions t = runner_.scenario().render.twolevel;
     t.alpha = c.alpha;
     t.level0_budget = int(c.level0_budget);
     t.a1 = c.a1;
@@ -58,7 +58,7 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   return a;
 }
 
-void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
+void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, session::PoseFeed& feed, bool last,
                          const ExtraSourceStatus& source) {
   namespace ctl = io::control;
   const double frame_us = (frame_end_s - frame_start_s) * 1e6;
@@ -123,7 +123,7 @@ void check_modbus_endpoint(const std::string& endpoint) {
   }
 }
 
-std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, ScenarioRunner& runner,
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, session::ScenarioRunner& runner,
                                                     io::LatencyMode initial_latency, bool quiet) {
   return std::make_unique<ModbusLink>(endpoint, runner, initial_latency, quiet);
 }

@@ -8,7 +8,7 @@ void check_modbus_endpoint(const std::string&) {
   throw UsageError("--modbus: this ig was built without Modbus (IG_WITH_MODBUS=OFF)");
 }
 
-std::unique_ptr<ControlSurface> make_modbus_surface(const std::string&, ScenarioRunner&, io::LatencyMode, bool) {
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string&, session::ScenarioRunner&, io::LatencyMode, bool) {
   throw UsageError("--modbus: this ig was built without Modbus (IG_WITH_MODBUS=OFF)");
 }
 

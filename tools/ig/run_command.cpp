@@ -15,9 +15,9 @@
 #include "cli_args.h"
 #include "commands.h"
 #include "io/recording.h"
-#include "pose_feed.h"
-#include "run_outputs.h"
-#include "scenario_runner.h"
+#include "session/pose_feed.h"
+#include "session/run_outputs.h"
+#include "session/scenario_runner.h"
 
 namespace ig::app {
 namespace {
@@ -30,42 +30,31 @@ constexpr const char* kUsage =
 struct Args {
   std::string scenario;
   std::string out_dir;
-  RunOptions run;
+  session::RunOptions run;
   std::optional<std::string> recording;  // replay recorded datagrams instead of the path
   bool quiet = false;
 };
 
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  ArgReader r(a);
-  bool window = false, headless = false;
-  while (!r.done()) {
-    const std::string f = r.next();
-    if (f == "--out") args.out_dir = r.value(f);
-    else if (f == "--frames") args.run.frames = r.positive_int(f);
-    else if (f == "--size") {
-      int w = 0, h = 0;
-      r.size(f, w, h);
-      args.run.width = w;
-      args.run.height = h;
-    } else if (f == "--method") args.run.method = r.value(f);
-    else if (f == "--recording") args.recording = r.value(f);
-    else if (f == "--headless") headless = true;
-    else if (f == "--window") window = true;
-    else if (f == "--fullscreen") args.run.fullscreen = window = true;
-    else if (f == "--vsync") {
-      const std::string v = r.value(f);
-      if (v != "on" && v != "off") throw UsageError("--vsync: expected on or off");
-      args.run.vsync = v == "on";
-    } else if (f == "--shader-dir") args.run.shader_dir = r.value(f);
-    else if (f == "--quiet") args.quiet = true;
-    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
-    else if (args.scenario.empty()) args.scenario = f;
-    else throw UsageError("unexpected argument " + f);
-  }
+  CLI::App app("ig run");
+  std::optional<std::string> vsync;
+  app.add_option("scenario", args.scenario);
+  app.add_option("--out", args.out_dir);
+  app.add_option("--frames", args.run.frames)->check(positive_int());
+  add_size_option(app, "--size", args.run.width, args.run.height);
+  app.add_option("--method", args.run.method);
+  app.add_option("--recording", args.recording);
+  auto* headless = app.add_flag("--headless");
+  auto* window = app.add_flag("--window")->excludes(headless);
+  app.add_flag("--fullscreen", args.run.fullscreen)->excludes(headless);
+  app.add_option("--vsync", vsync)->check(one_of({"on", "off"}));
+  app.add_option("--shader-dir", args.run.shader_dir);
+  app.add_flag("--quiet", args.quiet);
+  parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (window && headless) throw UsageError("--window and --headless exclude each other");
-  args.run.headless = !window;
+  if (vsync) args.run.vsync = *vsync == "on";
+  args.run.headless = !(window->count() || args.run.fullscreen);
   return args;
 }
 
@@ -81,13 +70,13 @@ int run_run_command(const std::vector<std::string>& argv) {
     const fs::path out = args.out_dir.empty() ? fs::path("out") / scenario.name : fs::path(args.out_dir);
     fs::create_directories(out);
 
-    ScenarioRunner runner(std::move(scenario), args.run);
+    session::ScenarioRunner runner(std::move(scenario), args.run);
     const auto& s = runner.scenario();
 
     // A recording replaces the scripted path: its datagrams go through the
     // same decoders and filter as live, on a simulated clock (deterministic).
     std::vector<io::RecordedDatagram> records;
-    std::optional<PoseFeed> feed;
+    std::optional<session::PoseFeed> feed;
     double t0 = 0.0;
     int frames = runner.frame_count();
     if (args.recording) {
@@ -105,11 +94,11 @@ int run_run_command(const std::vector<std::string>& argv) {
       if (const int k = std::min(int(std::lround(t / s.time_step_s)), io::scenario_frame_count(s) - 1); k < frames)
         capture_frames.insert(k);
 
-    RunOutputs outputs(out, "ig run", !args.quiet && isatty(STDERR_FILENO));
+    session::RunOutputs outputs(out, "ig run", !args.quiet && isatty(STDERR_FILENO));
     size_t next_record = 0;
     for (int k = 0; k < frames; ++k) {
       if (!runner.context().headless() && runner.window_closed()) break;
-      FrameResult f;
+      session::FrameResult f;
       if (feed) {
         const double now = t0 + k * s.time_step_s;
         for (; next_record < records.size() && records[next_record].receive_time_s <= now; ++next_record)

@@ -29,7 +29,7 @@
 #include "io/wire/cigi.h"
 #include "io/wire/fgnetfdm.h"
 #include "io/wire/native.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 namespace ig::app {
 namespace {
@@ -76,59 +76,51 @@ struct Args {
 
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  ArgReader r(a);
-  while (!r.done()) {
-    const std::string f = r.next();
-    if (f == "--to") args.to = r.value(f);
-    else if (f == "--protocol") {
-      const std::string p = r.value(f);
-      if (p == "native") args.protocol = io::Protocol::Native;
-      else if (p == "cigi") args.protocol = io::Protocol::Cigi;
-      else if (p == "fgfdm") args.protocol = io::Protocol::FgNetFdm;
-      else throw UsageError("--protocol: expected native, cigi or fgfdm, got '" + p + "'");
-    } else if (f == "--rate") args.rate_hz = r.positive_double(f);
-    else if (f == "--duration") args.duration_s = r.positive_double(f);
-    else if (f == "--geodetic") args.geodetic = true;
-    else if (f == "--loss") args.loss = r.probability(f);
-    else if (f == "--burst-loss") args.burst_loss = r.probability(f);
-    else if (f == "--burst-length") args.burst_length = r.positive_int(f);
-    else if (f == "--jitter-ms") args.jitter_ms = r.positive_double(f);
-    else if (f == "--reorder") args.reorder = r.probability(f);
-    else if (f == "--duplicate") args.duplicate = r.probability(f);
-    else if (f == "--corrupt") args.corrupt = r.probability(f);
-    else if (f == "--seed") args.seed = unsigned(r.positive_int(f));
-    else if (f == "--flood") args.flood = r.positive_int(f);
-    else if (f == "--cigi-listen") args.cigi_listen = r.value(f);
-    else if (f == "--cigi-sync") args.cigi_sync = true;
-    else if (f == "--no-timestamp") args.no_timestamp = true;
-    else if (f == "--pairs") args.pairs = r.positive_int(f);
-    else if (f == "--stall-every") args.stall_every = r.positive_int(f);
-    else if (f == "--stall-ms") {
-      const std::string v = r.value(f);
-      const auto comma = v.find(',');
-      if (comma == std::string::npos) throw UsageError("--stall-ms: expected A,B (milliseconds)");
-      args.stall_a_ms = parse_double(f, v.substr(0, comma));
-      args.stall_b_ms = parse_double(f, v.substr(comma + 1));
-      if (!(args.stall_a_ms > 0 && args.stall_b_ms > 0)) throw UsageError("--stall-ms: both gaps must be > 0");
-    }
-    else if (f == "--log") args.log = r.value(f);
-    else if (f == "--quiet") args.quiet = true;
-    else if (f == "--can") args.can = r.value(f);
-    else if (f == "--can-fd") args.can_fd = true;
-    else if (f == "--can-float-position") args.can_float_position = true;
-    else if (f == "--can-node") args.can_node = r.can_node(f);
-    else if (f == "--can-altitude") args.can_altitude = r.can_altitude_id(f);
-    else if (!f.empty() && f[0] == '-') throw UsageError("unknown option " + f);
-    else if (args.scenario.empty()) args.scenario = f;
-    else throw UsageError("unexpected argument " + f);
-  }
+  CLI::App app("ig send");
+  std::string protocol = "native";
+  std::optional<std::string> stall_ms;
+  app.add_option("scenario", args.scenario);
+  auto* to = app.add_option("--to", args.to);
+  app.add_option("--protocol", protocol)->check(one_of({"native", "cigi", "fgfdm"}));
+  app.add_option("--rate", args.rate_hz)->check(positive_number());
+  app.add_option("--duration", args.duration_s)->check(positive_number());
+  app.add_flag("--geodetic", args.geodetic);
+  app.add_option("--loss", args.loss)->check(probability());
+  app.add_option("--burst-loss", args.burst_loss)->check(probability());
+  app.add_option("--burst-length", args.burst_length)->check(positive_int());
+  app.add_option("--jitter-ms", args.jitter_ms)->check(positive_number());
+  app.add_option("--reorder", args.reorder)->check(probability());
+  app.add_option("--duplicate", args.duplicate)->check(probability());
+  app.add_option("--corrupt", args.corrupt)->check(probability());
+  app.add_option("--seed", args.seed)->check(positive_int());
+  app.add_option("--flood", args.flood)->check(positive_int());
+  auto* cigi_listen = app.add_option("--cigi-listen", args.cigi_listen);
+  app.add_flag("--cigi-sync", args.cigi_sync)->needs(cigi_listen);
+  app.add_flag("--no-timestamp", args.no_timestamp);
+  app.add_option("--pairs", args.pairs)->check(positive_int());
+  app.add_option("--stall-every", args.stall_every)->check(positive_int());
+  app.add_option("--stall-ms", stall_ms);
+  app.add_option("--log", args.log);
+  app.add_flag("--quiet", args.quiet);
+  auto* can = app.add_option("--can", args.can)->excludes(to);
+  app.add_flag("--can-fd", args.can_fd)->needs(can);
+  app.add_flag("--can-float-position", args.can_float_position)->needs(can);
+  app.add_option("--can-node", args.can_node)->check(can_node_id());
+  app.add_option("--can-altitude", args.can_altitude)->check(can_altitude_id());
+  parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (args.cigi_sync && !args.cigi_listen) throw UsageError("--cigi-sync needs --cigi-listen");
+  args.protocol = protocol == "cigi" ? io::Protocol::Cigi : protocol == "fgfdm" ? io::Protocol::FgNetFdm
+                                                                                : io::Protocol::Native;
+  if (stall_ms) {
+    const auto comma = stall_ms->find(',');
+    if (comma == std::string::npos) throw UsageError("--stall-ms: expected A,B (milliseconds)");
+    args.stall_a_ms = parse_double("--stall-ms", stall_ms->substr(0, comma));
+    args.stall_b_ms = parse_double("--stall-ms", stall_ms->substr(comma + 1));
+    if (!(args.stall_a_ms > 0 && args.stall_b_ms > 0)) throw UsageError("--stall-ms: both gaps must be > 0");
+  }
   if (args.cigi_sync && args.protocol != io::Protocol::Cigi) throw UsageError("--cigi-sync needs --protocol cigi");
   if (args.pairs == 1) throw UsageError("--pairs: N must be at least 2");
   if (args.to.empty() && !args.can) throw UsageError("missing --to ADDR:PORT (or --can IFNAME)");
-  if (!args.to.empty() && args.can) throw UsageError("--to and --can exclude each other");
-  if ((args.can_fd || args.can_float_position) && !args.can) throw UsageError("--can-fd / --can-float-position need --can");
 #ifndef IG_WITH_CAN
   if (args.can) throw UsageError("--can: this ig was built without SocketCAN (IG_WITH_CAN=OFF)");
 #endif
@@ -161,9 +153,9 @@ int run_send_command(const std::vector<std::string>& argv) {
   const Args& args = *parsed;
   try {
     const io::Scenario scenario = io::load_scenario(args.scenario);
-    const terrain::Heightfield hf = load_terrain(scenario.terrain);
-    const io::PathInterpolator path(place_path(scenario.path, hf));
-    const auto to_geodetic = local_to_geodetic(hf);
+    const terrain::Heightfield hf = session::load_terrain(scenario.terrain);
+    const io::PathInterpolator path(session::place_path(scenario.path, hf));
+    const auto to_geodetic = session::local_to_geodetic(hf);
     // CANaerospace carries latitude / longitude only; the FD pose is like native.
     const bool canaerospace = args.can && !args.can_fd;
     const std::string format = args.can ? (args.can_fd ? "canfd" : "canaerospace") : io::protocol_name(args.protocol);

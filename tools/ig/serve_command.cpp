@@ -22,16 +22,16 @@
 
 #include "cli_args.h"
 #include "commands.h"
-#include "drawn_surface.h"
+#include "session/drawn_surface.h"
 #include "host_services.h"
 #include "io/host_view_control.h"
 #include "io/net/udp_socket.h"
 #include "io/recording.h"
 #include "io/wire/cigi.h"
-#include "pose_feed.h"
-#include "run_outputs.h"
-#include "scenario_runner.h"
-#include "scene_setup.h"
+#include "session/pose_feed.h"
+#include "session/run_outputs.h"
+#include "session/scenario_runner.h"
+#include "session/scene_setup.h"
 #include "serve_plugins.h"
 
 namespace ig::app {
@@ -74,60 +74,43 @@ struct Args {
   std::optional<int> frames;
   std::optional<double> seconds;
   double rate_hz = 60.0;
-  RunOptions run;
+  session::RunOptions run;
   bool quiet = false;
 };
 
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
-  ArgReader r(a);
-  bool window = false, headless = false;
-  while (!r.done()) {
-    const std::string f = r.next();
-    if (f == "--config") args.config = r.value(f);
-    else if (f == "--udp") args.udp = r.value(f);
-    else if (f == "--cigi") args.cigi = r.value(f);
-    else if (f == "--cigi-reply") args.cigi_reply = r.value(f);
-    else if (f == "--fgfdm") args.fgfdm = r.value(f);
-    else if (f == "--multicast") args.multicast = r.value(f);
-    else if (f == "--channel") args.channel = r.value(f);
-    else if (f == "--record") args.record = r.value(f);
-    else if (f == "--latency") {
-      args.latency = r.value(f);
-      if (!io::parse_latency_mode(*args.latency))
-        throw UsageError("--latency: expected smooth, latest or sync, got '" + *args.latency + "'");
-    }
-    else if (f == "--modbus") args.modbus = r.value(f);
-    else if (f == "--host-surface") {
-      const std::string v = r.value(f);
-      if (v != "full" && v != "drawn") throw UsageError("--host-surface: expected full or drawn, got '" + v + "'");
-      args.host_surface_drawn = v == "drawn";
-    }
-    else if (f == "--can") args.can = r.value(f);
-    else if (f == "--can-altitude") args.can_altitude = r.can_altitude_id(f);
-    else if (f == "--can-node") args.can_node = r.can_node(f);
-    else if (f == "--can-max-age-ms") args.can_max_age_ms = r.positive_double(f);
-    else if (f == "--out") args.out_dir = r.value(f);
-    else if (f == "--frames") args.frames = r.positive_int(f);
-    else if (f == "--seconds") args.seconds = r.positive_double(f);
-    else if (f == "--rate") args.rate_hz = r.positive_double(f);
-    else if (f == "--size") {
-      int w = 0, h = 0;
-      r.size(f, w, h);
-      args.run.width = w;
-      args.run.height = h;
-    } else if (f == "--method") args.run.method = r.value(f);
-    else if (f == "--headless") headless = true;
-    else if (f == "--window") window = true;
-    else if (f == "--quiet") args.quiet = true;
-    else throw UsageError("unknown option " + f);
-  }
-  if (window && headless) throw UsageError("--window and --headless exclude each other");
-  if (args.frames && args.seconds) throw UsageError("--frames and --seconds exclude each other");
-  if (args.cigi_reply && !args.cigi) throw UsageError("--cigi-reply needs --cigi");
+  CLI::App app("ig serve");
+  std::optional<std::string> host_surface;
+  app.add_option("--config", args.config);
+  app.add_option("--udp", args.udp);
+  auto* cigi = app.add_option("--cigi", args.cigi);
+  app.add_option("--cigi-reply", args.cigi_reply)->needs(cigi);
+  app.add_option("--fgfdm", args.fgfdm);
+  app.add_option("--multicast", args.multicast);
+  app.add_option("--channel", args.channel);
+  app.add_option("--record", args.record);
+  app.add_option("--latency", args.latency)->check(one_of({"smooth", "latest", "sync"}));
+  app.add_option("--modbus", args.modbus);
+  app.add_option("--host-surface", host_surface)->check(one_of({"full", "drawn"}));
+  app.add_option("--can", args.can);
+  app.add_option("--can-altitude", args.can_altitude)->check(can_altitude_id());
+  app.add_option("--can-node", args.can_node)->check(can_node_id());
+  app.add_option("--can-max-age-ms", args.can_max_age_ms)->check(positive_number());
+  app.add_option("--out", args.out_dir);
+  auto* frames = app.add_option("--frames", args.frames)->check(positive_int());
+  app.add_option("--seconds", args.seconds)->check(positive_number())->excludes(frames);
+  app.add_option("--rate", args.rate_hz)->check(positive_number());
+  add_size_option(app, "--size", args.run.width, args.run.height);
+  app.add_option("--method", args.run.method);
+  auto* headless = app.add_flag("--headless");
+  auto* window = app.add_flag("--window")->excludes(headless);
+  app.add_flag("--quiet", args.quiet);
+  parse_command_line(app, a);
   if (!args.udp && !args.cigi && !args.fgfdm && !args.can)
     throw UsageError("no pose source: give --udp, --cigi, --fgfdm or --can");
-  args.run.headless = !window;
+  args.host_surface_drawn = host_surface == "drawn";
+  args.run.headless = !window->count();
   if (args.modbus) check_modbus_endpoint(*args.modbus);
   return args;
 }
@@ -183,8 +166,8 @@ int run_serve_command(const std::vector<std::string>& argv) {
     std::unique_ptr<io::RecordingWriter> recorder;
     if (args.record) recorder = std::make_unique<io::RecordingWriter>(*args.record);
 
-    ScenarioRunner runner(std::move(scenario), args.run);
-    PoseFeed feed(runner.heightfield());
+    session::ScenarioRunner runner(std::move(scenario), args.run);
+    session::PoseFeed feed(runner.heightfield());
     feed.set_latency_mode(latency);
     if (!feed.georeferenced())
       std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
@@ -201,10 +184,10 @@ int run_serve_command(const std::vector<std::string>& argv) {
     std::unique_ptr<HostServices> services;
     if (cigi_reply || args.udp)
       services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
-                                                geodetic_placer(runner.heightfield()),
-                                                local_to_geodetic(runner.heightfield()), HostServicesOptions{},
+                                                session::geodetic_placer(runner.heightfield()),
+                                                session::local_to_geodetic(runner.heightfield()), HostServicesOptions{},
                                                 &runner.scene().height_pyramid());
-    DrawnSurface drawn(runner);
+    session::DrawnSurface drawn(runner);
     if (services && args.host_surface_drawn)
       services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
     std::unique_ptr<ControlSurface> control;  // Modbus
@@ -216,7 +199,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
 
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
-    RunOutputs outputs(out, "ig serve", !args.quiet && isatty(STDERR_FILENO));
+    session::RunOutputs outputs(out, "ig serve", !args.quiet && isatty(STDERR_FILENO));
     const double period = 1.0 / args.rate_hz;
     const double start = io::net::steady_now_s();
     double next_tick = start;
@@ -309,7 +292,7 @@ int run_serve_command(const std::vector<std::string>& argv) {
       if (const std::string w = feed.take_outside_warning(); !w.empty()) std::cerr << "ig serve: " << w << "\n";
       last_pose = pose;
       const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
+      const session::FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
       const double complete = io::net::steady_now_s();  // the renderer ends with glFinish
       feed.frame_complete(complete);
       display_lead_s += 0.1 * (std::min(complete - frame_start, 2.0 * period) - display_lead_s);

@@ -13,6 +13,7 @@
 
 #include "gl/render_target.h"
 #include "gl/work_counters.h"
+#include "options/twolevel_options.h"
 #include "render/camera.h"
 #include "render/terrain_scene.h"
 
@@ -82,7 +83,7 @@ class TerrainMethod {
 // geometric error e metres at distance d projects to at most e / d times this.
 double pixels_per_radian(const Camera& camera, int viewport_height_px);
 
-struct TwoLevelOptions;  // render/twolevel_method.h
+using options::TwoLevelOptions;  // options/twolevel_options.h
 
 // Names accepted by make_method().
 std::vector<std::string> method_names();

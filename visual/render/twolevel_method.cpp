@@ -7,6 +7,7 @@
 
 #include "gl/gl_context.h"
 #include "gl/scoped_disable.h"
+#include "lod/level0_budget.h"
 #include "lod/level0_envelope.h"
 #include "lod/level1_coverage_predictor.h"
 
@@ -122,9 +123,17 @@ struct TwoLevelMethod::SizeMeshes {
   }
 };
 
+namespace {
+// "auto" (0) without a display to derive it from: the reference display's budget.
+TwoLevelOptions with_budget(TwoLevelOptions o) {
+  if (o.level0_budget == 0) o.level0_budget = lod::level0_budget_for_display(0.0);
+  return o;
+}
+}  // namespace
+
 TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
     : scene_(scene),
-      options_(options),
+      options_(with_budget(std::move(options))),
       grid_program_(shader_dir, "terrain_grid.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
       level0_program_(shader_dir, "level0.vert", std::vector<std::string>{"terrain_shading.frag", "level0_blend.frag", "level0.frag"}),
       level0_clipped_program_(shader_dir, "level0.vert",
@@ -133,7 +142,7 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
       pyramid_(scene.height_pyramid()),
       level0_(lod::z_ordered(lod::build_level0_mesh(scene.heightfield(),
-                                               lod::Level0Options{options.level0_budget, 0.0, scene.earth_radius_m(),
+                                               lod::Level0Options{options_.level0_budget, 0.0, scene.earth_radius_m(),
                                                                   options.level0_whole_error}))),
       level0_heights_(level0_, scene.heightfield().width, scene.heightfield().height),
       block_mesh_(kBlockQuads),

@@ -24,38 +24,14 @@
 #include "lod/level1_size_controller.h"
 #include "lod/look_at_point.h"
 #include "lod/roam_level0_mesh.h"
+#include "options/twolevel_options.h"
 #include "render/grid_mesh.h"
 #include "render/terrain_method.h"
 #include "terrain/height_pyramid.h"
 
 namespace ig::render {
 
-struct TwoLevelOptions {
-  int level0_budget = 524288;     // Level0 triangles (the paper: 2048; scenarios default to "auto", lod/level0_budget.h)
-  // Level1 also covers the ground under a low eye (see apply_eye_guard).
-  bool eye_guard = true;
-  double a1 = 0.50, a2 = 0.80;    // Level1 size thresholds on R
-  double alpha = 2000.0;          // band factor: w_trans = (r0 / r1) * alpha * w1
-  bool gaussian_beta = false;     // beta template: linear (default) or Gaussian
-  int max_level1 = 1025;          // top of the ladder (vertices a side)
-  int band_stride = 2;            // band geometry every k samples (it only carries uv)
-  // The band's uv1 and beta found in Level0's fragment shader by marching
-  // the pixel's ray against the height texture, only near the ring (true),
-  // or by the paper's separate band pass into its own target (false).
-  bool band_inline = true;
-  // Level0 lifted to a conservative upper envelope (lod/level0_envelope.h):
-  // no ridge cut below the skyline, so no sky through Level0 terrain.
-  bool level0_envelope = false;
-  // Level0 refined on whole-triangle error (lod::Level0Options::whole_triangle_error).
-  bool level0_whole_error = false;
-  // Size control predicts R for every ladder size from a grid of view rays
-  // and jumps to the right size (lod/level1_coverage_predictor.h); false:
-  // the paper's one step per frame on the measured R alone.
-  bool predict_size = true;
-  // For cost breakdowns only (ig bench --skip-pass): passes not drawn,
-  // any of "level1", "band", "level0", "count". The image is then wrong.
-  std::vector<std::string> skip_passes;
-};
+using options::TwoLevelOptions;  // options/twolevel_options.h
 
 class TwoLevelMethod final : public TerrainMethod {
  public:

@@ -7,7 +7,9 @@
 #include <cpl_error.h>
 #include <ogr_srs_api.h>
 
+#include <GeographicLib/Ellipsoid.hpp>
 #include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -412,42 +414,16 @@ Heightfield load_with_oiio(const std::string& path, const DemLoadOptions& opts,
 
 // ----------------------------------------------------------------- JSON ---
 
-void json_string(std::string& out, std::string_view s) {
-  out += '"';
-  for (char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20) {
-      static const char* hex = "0123456789abcdef";
-      out += "\\u00";
-      out += hex[u >> 4];
-      out += hex[u & 15];
-    } else {
-      out += c;
-    }
-  }
-  out += '"';
-}
-
+// A number as ig info has always written it: integral values as integers,
+// a float by its own shortest decimal (not its double's 17 digits), and
+// null when not finite.
 template <typename T>
-void json_number(std::string& out, T v) {
-  if (!std::isfinite(double(v))) {
-    out += "null";
-    return;
-  }
+nlohmann::ordered_json json_number(T v) {
+  if (!std::isfinite(double(v))) return nullptr;
+  if (double(v) == std::trunc(double(v)) && std::fabs(double(v)) < 9.0e15) return std::int64_t(v);
   char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, res.ptr);
-}
-
-void json_point(std::string& out, double x, double y) {
-  out += '[';
-  json_number(out, x);
-  out += ", ";
-  json_number(out, y);
-  out += ']';
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::strtod(std::string(buf, res.ptr).c_str(), nullptr);
 }
 
 }  // namespace
@@ -456,14 +432,8 @@ DemError::DemError(const std::string& path, const std::string& reason)
     : std::runtime_error(one_line(path + ": " + reason)), path_(path), reason_(reason) {}
 
 MetresPerAngle metres_per_angle(double lat_deg, double a, double inv_f, double unit_rad) {
-  const double f = inv_f > 0 ? 1.0 / inv_f : 0.0;
-  const double e2 = f * (2.0 - f);
-  const double phi = lat_deg * (std::numbers::pi / 180.0);
-  const double s = std::sin(phi);
-  const double w2 = 1.0 - e2 * s * s;
-  const double meridian_radius = a * (1.0 - e2) / (w2 * std::sqrt(w2));
-  const double prime_vertical_radius = a / std::sqrt(w2);
-  return {meridian_radius * unit_rad, prime_vertical_radius * std::cos(phi) * unit_rad};
+  const GeographicLib::Ellipsoid ellipsoid(a, inv_f > 0 ? 1.0 / inv_f : 0.0);
+  return {ellipsoid.MeridionalCurvatureRadius(lat_deg) * unit_rad, ellipsoid.CircleRadius(lat_deg) * unit_rad};
 }
 
 Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
@@ -524,76 +494,38 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
 }
 
 std::string dem_info_json(const Heightfield& hf) {
-  // One line, JSON with ", " / ": " separators (as Python's json.dumps).
-  std::string o = "{";
-  auto key = [&o](const char* name) {
-    if (o.size() > 1) o += ", ";
-    json_string(o, name);
-    o += ": ";
-  };
-  key("width");
-  o += std::to_string(hf.width);
-  key("height");
-  o += std::to_string(hf.height);
-  key("spacing_x_m");
-  json_number(o, hf.spacing_x_m);
-  key("spacing_y_m");
-  json_number(o, hf.spacing_y_m);
-  key("min_m");
-  json_number(o, hf.min_m);
-  key("max_m");
-  json_number(o, hf.max_m);
-  key("mean_m");
-  json_number(o, hf.mean_m);
-  key("nodata_count");
-  o += std::to_string(hf.nodata_count);
-  key("crs");
-  if (hf.georef && !hf.georef->crs_name.empty())
-    json_string(o, hf.georef->crs_name);
-  else
-    o += "null";
-  key("geographic");
-  o += (hf.georef && hf.georef->geographic) ? "true" : "false";
-  key("source");
-  json_string(o, hf.source);
+  nlohmann::ordered_json o;
+  o["width"] = hf.width;
+  o["height"] = hf.height;
+  o["spacing_x_m"] = json_number(hf.spacing_x_m);
+  o["spacing_y_m"] = json_number(hf.spacing_y_m);
+  o["min_m"] = json_number(hf.min_m);
+  o["max_m"] = json_number(hf.max_m);
+  o["mean_m"] = json_number(hf.mean_m);
+  o["nodata_count"] = hf.nodata_count;
+  o["crs"] = nullptr;
+  if (hf.georef && !hf.georef->crs_name.empty()) o["crs"] = hf.georef->crs_name;
+  o["geographic"] = hf.georef && hf.georef->geographic;
+  o["source"] = hf.source;
   if (hf.source_tiles > 0) {
-    key("tiles");
-    o += std::to_string(hf.source_tiles);
-    key("reprojected_tiles");
-    o += std::to_string(hf.reprojected_tiles);
+    o["tiles"] = hf.source_tiles;
+    o["reprojected_tiles"] = hf.reprojected_tiles;
   }
   if (hf.georef) {
     const auto& g = hf.georef->grid_to_crs;
     auto at = [&g](double i, double j) {
-      return std::array<double, 2>{g[0] + i * g[1] + j * g[2], g[3] + i * g[4] + j * g[5]};
+      return nlohmann::ordered_json::array(
+          {json_number(g[0] + i * g[1] + j * g[2]), json_number(g[3] + i * g[4] + j * g[5])});
     };
     const double ie = hf.width - 1, je = hf.height - 1;
     // Corner sample centres, [x, y] in the DEM's CRS (lon, lat for geographic).
-    key("corners");
-    const std::array<std::pair<const char*, std::array<double, 2>>, 4> corners = {
-        {{"sw", at(0, 0)}, {"se", at(ie, 0)}, {"nw", at(0, je)}, {"ne", at(ie, je)}}};
-    o += '{';
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      if (k) o += ", ";
-      json_string(o, corners[k].first);
-      o += ": ";
-      json_point(o, corners[k].second[0], corners[k].second[1]);
-    }
-    o += '}';
+    o["corners"] = {{"sw", at(0, 0)}, {"se", at(ie, 0)}, {"nw", at(0, je)}, {"ne", at(ie, je)}};
     const auto [west, south, east, north] = *hf.crs_bounds();
-    key("bounds");
-    o += "{\"west\": ";
-    json_number(o, west);
-    o += ", \"south\": ";
-    json_number(o, south);
-    o += ", \"east\": ";
-    json_number(o, east);
-    o += ", \"north\": ";
-    json_number(o, north);
-    o += '}';
+    o["bounds"] = {{"west", json_number(west)}, {"south", json_number(south)}, {"east", json_number(east)},
+                   {"north", json_number(north)}};
   }
-  o += '}';
-  return o;
+  // One line; invalid UTF-8 in a path or CRS name replaced, not thrown.
+  return o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 }  // namespace ig::terrain

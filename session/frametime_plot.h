@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-namespace ig::app {
+namespace ig::session {
 
 // Plots frame time over the run (frames.csv -> frametime.png) with gnuplot.
 // Returns false (and says why on stderr) when gnuplot is missing or fails;
@@ -9,4 +9,4 @@ namespace ig::app {
 bool plot_frame_times(const std::string& csv_path, const std::string& png_path, const std::string& title,
                       double budget_ms);
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -19,7 +19,7 @@
 #include "stats/frame_log.h"
 #include "terrain/heightfield.h"
 
-namespace ig::app {
+namespace ig::session {
 
 struct RunOptions {
   std::optional<int> frames;          // overrides the scenario's duration
@@ -49,9 +49,6 @@ struct FrameResult {
   io::Pose pose;
   double pose_ms = 0.0;
 };
-
-// The scenario's two-level settings as method options (what make_method takes).
-render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& spec);
 
 // The frame's work counters as log columns: totals (vs_invocations,
 // fs_invocations, primitives, draw_calls, upload_bytes), then with per_pass
@@ -92,7 +89,7 @@ class ScenarioRunner {
   // Rebuilds every channel's LOD method with new two-level settings (Level0
   // budget, band factor, ...) at a frame boundary: Level0 is built again, so
   // that frame takes the build time (docs/results.md).
-  void rebuild_method(const io::TwoLevelSpec& twolevel);
+  void rebuild_method(const options::TwoLevelOptions& twolevel);
   // Windowed: the user closed the window (polls events). Headless: false.
   bool window_closed() { return context_->should_close(); }
   // The camera render_frame / render_pose use for a pose on a channel
@@ -112,4 +109,4 @@ class ScenarioRunner {
   int frame_count_ = 0;
 };
 
-}  // namespace ig::app
+}  // namespace ig::session

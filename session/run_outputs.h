@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scenario_runner.h"
+#include "session/scenario_runner.h"
 #include "stats/frame_log.h"
 
-namespace ig::app {
+namespace ig::session {
 
 class RunOutputs {
  public:
@@ -40,4 +40,4 @@ class RunOutputs {
   std::chrono::steady_clock::time_point start_;
 };
 
-}  // namespace ig::app
+}  // namespace ig::session

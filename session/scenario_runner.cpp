@@ -1,4 +1,4 @@
-#include "scenario_runner.h"
+#include "session/scenario_runner.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,9 +6,9 @@
 
 #include "lod/level0_budget.h"
 #include "render/twolevel_method.h"
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
-namespace ig::app {
+namespace ig::session {
 namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
@@ -16,23 +16,6 @@ double ms_since(Clock::time_point t0) {
 }
 glm::vec3 to_vec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
 }  // namespace
-
-render::TwoLevelOptions twolevel_options(const io::TwoLevelSpec& t) {
-  render::TwoLevelOptions o;
-  o.level0_budget = t.level0_budget;
-  o.a1 = t.a1;
-  o.a2 = t.a2;
-  o.alpha = t.alpha;
-  o.gaussian_beta = t.beta == "gaussian";
-  o.max_level1 = t.max_level1;
-  o.band_stride = t.band_stride;
-  o.band_inline = t.band == "inline";
-  o.level0_whole_error = t.level0_error == "whole";
-  o.eye_guard = t.eye_guard;
-  o.level0_envelope = t.level0_envelope;
-  o.predict_size = t.predict_size;
-  return o;
-}
 
 ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
     : scenario_(std::move(scenario)), options_(options) {
@@ -76,7 +59,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
     ChannelView v;
     v.spec = spec;
     v.target = std::make_unique<gl::RenderTarget>(r.width, r.height);
-    v.method = render::make_method(r.method, *scene_, options_.shader_dir, twolevel_options(r.twolevel));
+    v.method = render::make_method(r.method, *scene_, options_.shader_dir, r.twolevel);
     v.renderer = std::make_unique<render::FrameRenderer>(*scene_, *v.method, options_.shader_dir);
     channels_.push_back(std::move(v));
   }
@@ -164,10 +147,10 @@ void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult
   }
 }
 
-void ScenarioRunner::rebuild_method(const io::TwoLevelSpec& twolevel) {
+void ScenarioRunner::rebuild_method(const options::TwoLevelOptions& twolevel) {
   scenario_.render.twolevel = twolevel;
   for (auto& ch : channels_) {
-    auto method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, twolevel_options(twolevel));
+    auto method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, twolevel);
     ch.renderer->set_method(*method);  // the renderer (sky program, queries) is kept
     ch.method = std::move(method);
   }
@@ -180,4 +163,4 @@ void ScenarioRunner::present() {
   }
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

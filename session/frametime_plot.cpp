@@ -1,4 +1,4 @@
-#include "frametime_plot.h"
+#include "session/frametime_plot.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iostream>
 
-namespace ig::app {
+namespace ig::session {
 
 bool plot_frame_times(const std::string& csv_path, const std::string& png_path, const std::string& title,
                       double budget_ms) {
@@ -42,4 +42,4 @@ bool plot_frame_times(const std::string& csv_path, const std::string& png_path, 
   return true;
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -7,7 +7,7 @@
 
 #include <optional>
 
-namespace ig::app {
+namespace ig::session {
 
 class ScenarioRunner;
 
@@ -23,4 +23,4 @@ class DrawnSurface {
   ScenarioRunner& runner_;
 };
 
-}  // namespace ig::app
+}  // namespace ig::session

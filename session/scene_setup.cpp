@@ -1,4 +1,4 @@
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
 #include <algorithm>
 #include <string>
@@ -9,7 +9,7 @@
 #include "terrain/georef.h"
 #include "terrain/synthetic_terrain.h"
 
-namespace ig::app {
+namespace ig::session {
 
 terrain::Heightfield load_terrain(const io::TerrainSpec& spec) {
   if (spec.generator) {
@@ -90,4 +90,4 @@ std::function<std::optional<glm::dvec3>(const glm::dvec3&)> local_to_geodetic(co
   };
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

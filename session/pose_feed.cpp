@@ -1,8 +1,8 @@
-#include "pose_feed.h"
+#include "session/pose_feed.h"
 
-#include "scene_setup.h"
+#include "session/scene_setup.h"
 
-namespace ig::app {
+namespace ig::session {
 
 PoseFeed::PoseFeed(const terrain::Heightfield& hf, const io::PoseFilterOptions& options)
     : filter_(options),
@@ -98,4 +98,4 @@ nlohmann::json PoseFeed::summary() const {
           {"frames_outside_terrain", frames_outside_}};
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

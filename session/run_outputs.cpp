@@ -1,12 +1,12 @@
-#include "run_outputs.h"
+#include "session/run_outputs.h"
 
 #include <cstdio>
 #include <fstream>
 
 #include "capture/png_writer.h"
-#include "frametime_plot.h"
+#include "session/frametime_plot.h"
 
-namespace ig::app {
+namespace ig::session {
 namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
@@ -110,4 +110,4 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
   return plotted ? 0 : 1;
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

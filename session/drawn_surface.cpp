@@ -1,9 +1,9 @@
-#include "drawn_surface.h"
+#include "session/drawn_surface.h"
 
 #include "render/twolevel_method.h"
-#include "scenario_runner.h"
+#include "session/scenario_runner.h"
 
-namespace ig::app {
+namespace ig::session {
 
 std::optional<double> DrawnSurface::level0_height_at(double x_m, double y_m) {
   const auto* method = dynamic_cast<const render::TwoLevelMethod*>(&runner_.method());
@@ -17,4 +17,4 @@ std::optional<double> DrawnSurface::level0_height_at(double x_m, double y_m) {
   return method->level0_heights().height_at(i, j);
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

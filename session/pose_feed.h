@@ -17,7 +17,7 @@
 #include "stats/frame_log.h"
 #include "terrain/heightfield.h"
 
-namespace ig::app {
+namespace ig::session {
 
 class PoseFeed {
  public:
@@ -59,4 +59,4 @@ class PoseFeed {
   std::string outside_warning_;
 };
 
-}  // namespace ig::app
+}  // namespace ig::session

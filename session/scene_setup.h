@@ -12,7 +12,7 @@
 #include "io/scenario.h"
 #include "terrain/heightfield.h"
 
-namespace ig::app {
+namespace ig::session {
 
 // Throws terrain::DemError / std::invalid_argument with a one-line reason.
 terrain::Heightfield load_terrain(const io::TerrainSpec& spec);
@@ -38,4 +38,4 @@ io::GeodeticToLocal geodetic_placer(const terrain::Heightfield& hf);
 // The inverse, for senders (local ENU -> lat deg, lon deg, alt m).
 std::function<std::optional<glm::dvec3>(const glm::dvec3&)> local_to_geodetic(const terrain::Heightfield& hf);
 
-}  // namespace ig::app
+}  // namespace ig::session
