@@ -36,15 +36,38 @@ in_addr parse_address(const std::string& host, const std::string& what) {
 double timespec_s(const timespec& t) { return double(t.tv_sec) + double(t.tv_nsec) * 1e-9; }
 
 // The kernel stamps datagrams on CLOCK_REALTIME; the IG runs on the steady
-// clock. Map through the two clocks read now (a few ns apart). A stamp that
+// clock. Map through the two clocks read together: the realtime clock is
+// read just before and just after the steady one, and a pair split by a
+// preemption (reads more than 20 us apart, seen on a loaded 2-core machine)
+// is read again, so a busy machine does not shift the stamps. A stamp that
 // is in the future or more than 10 s old (the realtime clock was stepped) is
 // not trusted: the read time is used instead.
-double kernel_stamp_to_steady(const timespec& kernel, double steady_now, bool& used) {
-  timespec real{};
-  clock_gettime(CLOCK_REALTIME, &real);
-  const double age = timespec_s(real) - timespec_s(kernel);
+struct ClockPair {
+  double realtime_s = 0.0;
+  double steady_s = 0.0;
+};
+
+ClockPair read_clock_pair() {
+  ClockPair best;
+  double best_gap = 1e9;
+  for (int attempt = 0; attempt < 4 && best_gap > 20e-6; ++attempt) {
+    timespec before{}, after{};
+    clock_gettime(CLOCK_REALTIME, &before);
+    const double steady = steady_now_s();
+    clock_gettime(CLOCK_REALTIME, &after);
+    const double gap = timespec_s(after) - timespec_s(before);
+    if (gap < best_gap) {
+      best_gap = gap;
+      best = {0.5 * (timespec_s(before) + timespec_s(after)), steady};
+    }
+  }
+  return best;
+}
+
+double kernel_stamp_to_steady(const timespec& kernel, const ClockPair& now, bool& used) {
+  const double age = now.realtime_s - timespec_s(kernel);
   used = age >= 0.0 && age < 10.0;
-  return used ? steady_now - age : steady_now;
+  return used ? now.steady_s - age : now.steady_s;
 }
 
 }  // namespace
@@ -136,8 +159,8 @@ std::size_t UdpReceiver::poll(const Handler& handler, std::size_t max_datagrams)
       if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) ++stats_.errors;
       break;
     }
-    const double now = steady_now_s();  // per datagram, never once per poll
-    double received = now;
+    const ClockPair now = read_clock_pair();  // per datagram, never once per poll
+    double received = now.steady_s;
     bool kernel = false;
     for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c; c = CMSG_NXTHDR(&msg, c)) {
       if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_TIMESTAMPNS) {
