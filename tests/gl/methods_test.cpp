@@ -140,13 +140,25 @@ TEST(MethodsSetup, AutoLevel0BudgetIsResolvedFromTheChannel) {
             ig::lod::level0_budget_for_display(ig::lod::pixels_per_radian(kH, 20.0)));
 }
 
+// The method under test on the suite's scene, as ig bench builds it, with
+// its own renderer and a frame of the test's size.
+struct MethodUnderTest {
+  MethodUnderTest(ScenarioRunner& r, const std::string& name)
+      : method(ig::render::make_method(name, r.scene(), std::string(IG_BIN_DIR) + "/shaders",
+                                       r.scenario().render.twolevel)),
+        renderer(r.scene(), *method, std::string(IG_BIN_DIR) + "/shaders"),
+        target(kW, kH) {}
+  std::unique_ptr<ig::render::TerrainMethod> method;
+  ig::render::FrameRenderer renderer;
+  ig::gl::RenderTarget target;
+};
+
 TEST_P(Methods, ImageErrorAgainstTheReferenceIsWithinTheMethodsOwnBound) {
   const std::string name = GetParam();
-  auto& r = *runner_;
-  auto method = ig::render::make_method(name, r.scene(), std::string(IG_BIN_DIR) + "/shaders",
-                                        r.scenario().render.twolevel);
-  ig::render::FrameRenderer renderer(r.scene(), *method, std::string(IG_BIN_DIR) + "/shaders");
-  ig::gl::RenderTarget target(kW, kH);
+  MethodUnderTest m(*runner_, name);
+  auto& method = m.method;
+  auto& renderer = m.renderer;
+  auto& target = m.target;
   const auto knob = method->knob();
   std::printf("[%s] default knob: %s\n", name.c_str(),
               knob ? (knob->name + " = " + std::to_string(knob->value) + " " + knob->unit).c_str() : "none");
@@ -192,11 +204,9 @@ TEST_P(Methods, ImageErrorAgainstTheReferenceIsWithinTheMethodsOwnBound) {
 // it). Not allowed: any pixel turning sky or terrain (a culled skirt or wall).
 TEST_P(Methods, BackFaceCullingChangesNoPixel) {
   const std::string name = GetParam();
-  auto& r = *runner_;
-  auto method = ig::render::make_method(name, r.scene(), std::string(IG_BIN_DIR) + "/shaders",
-                                        r.scenario().render.twolevel);
-  ig::render::FrameRenderer renderer(r.scene(), *method, std::string(IG_BIN_DIR) + "/shaders");
-  ig::gl::RenderTarget target(kW, kH);
+  MethodUnderTest m(*runner_, name);
+  auto& renderer = m.renderer;
+  auto& target = m.target;
   constexpr long long kMaxSilhouettePixels = 8;  // of 76 800
   for (int v = 0; v < kViewCount; ++v) {
     const auto& camera = cameras_[v];
