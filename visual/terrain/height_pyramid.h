@@ -14,17 +14,18 @@
 // A level-k node (i, j) covers cells [i * 2^k, min((i+1) * 2^k, cells_x()))
 // in x, and the same in y.
 //
-// Compact storage (issue 16: terrain beyond a memory budget): level 0 is not
-// stored, its nodes are read from the heights (exact, and the ray cast reads
-// those heights next anyway). Levels >= 1 are stored as 16-bit min/max
-// quantised over the whole height range, the minimum rounded down and the
-// maximum up (with one step of margin), so every node still BOUNDS its cells
-// (lo <= true min, hi >= true max), loosened by at most ~3 steps of
-// (max - min) / 65000 (0.07 m on a 4500 m range). The root is exact. Memory:
-// 4 bytes per level-1 node (a level-1 node covers 4 cells) x 4/3, about
-// 1.33 bytes per sample (22 MB for 4097 x 4097; was 179 MB at 8 bytes per
-// cell with a stored float level 0). Bounds that are looser only make the
-// ray cast visit a few more nodes; its answers are unchanged.
+// Compact storage (issue 16: terrain beyond a memory budget): levels 0 and 1
+// are not stored, their nodes are read from the heights (exact: 2 x 2 and
+// 3 x 3 samples, which the ray cast reads next anyway). Levels >= 2 are
+// stored as 16-bit min/max quantised over the whole height range, the
+// minimum rounded down and the maximum up (with one step of margin), so
+// every node still BOUNDS its cells (lo <= true min, hi >= true max),
+// loosened by at most ~3 steps of (max - min) / 65000 (0.07 m on a 4500 m
+// range). The root is exact. Memory: 4 bytes per level-2 node (a level-2
+// node covers 16 cells) x 4/3, about 0.33 bytes per sample (5.6 MB for
+// 4097 x 4097, 140 MB for 20481 x 20481; was 179 MB for 4097 x 4097 at 8
+// bytes per cell with a stored float level 0). Bounds that are looser only
+// make the ray cast visit a few more nodes; its answers are unchanged.
 //
 // The pyramid keeps a pointer to the heightfield's heights (level 0): the
 // heightfield must outlive the pyramid and its heights must not be
@@ -63,11 +64,12 @@ class HeightPyramid {
   int num_levels() const { return static_cast<int>(levels_.size()); }
   int level_width(int level) const { return levels_[level].nx; }
   int level_height(int level) const { return levels_[level].ny; }
-  // Bounds of node (i, j) at the given level: exact at level 0 (the cell's
-  // corner heights), conservative above (see the top of this file); no
-  // bounds checking.
+  // Bounds of node (i, j) at the given level: exact at levels 0 and 1 (the
+  // heights), conservative above (see the top of this file); no bounds
+  // checking.
   MinMax node(int level, int i, int j) const {
     if (level == 0) return cell(i, j);
+    if (level == 1) return quad(i, j);
     const Quantised q = nodes_[index(levels_[level], i, j)];
     return MinMax{decode(q.lo), decode(q.hi)};
   }
@@ -75,10 +77,12 @@ class HeightPyramid {
   // (at level 0: the two rows of heights under it).
   void prefetch(int level, int i, int j) const {
 #if defined(__GNUC__) || defined(__clang__)
-    if (level == 0) {
-      const float* h = heights_ + static_cast<std::size_t>(j) * width_ + i;
+    if (level <= 1) {  // the 2 or 3 rows of heights under it
+      const int step = level == 0 ? 1 : 2;
+      const float* h = heights_ + static_cast<std::size_t>(j * step) * width_ + i * step;
       __builtin_prefetch(h);
       __builtin_prefetch(h + width_);
+      if (level == 1 && j * 2 + 2 < height_) __builtin_prefetch(h + 2 * width_);
     } else {
       __builtin_prefetch(nodes_.data() + index(levels_[level], i, j));
     }
@@ -86,14 +90,14 @@ class HeightPyramid {
   }
   // Exact min/max of all heights.
   MinMax root() const { return root_; }
-  // Bytes held by the stored levels (level 0 is the heightfield's own).
+  // Bytes held by the stored levels (levels 0 and 1 are read from the heights).
   std::size_t memory_bytes() const { return nodes_.size() * sizeof(Quantised); }
 
  private:
   struct Quantised {
     std::uint16_t lo, hi;
   };
-  // Storage: each stored level (>= 1) is a row-major grid of 2x2 blocks of
+  // Storage: each stored level (>= 2) is a row-major grid of 2x2 blocks of
   // nodes, a block being 4 consecutive Quantised ((0,0), (1,0), (0,1),
   // (1,1)), so the 4 children of a node are read together. Odd-sized
   // levels are padded to whole blocks (padding nodes are never read).
@@ -112,12 +116,26 @@ class HeightPyramid {
     const float lo0 = a < b ? a : b, lo1 = c < d ? c : d, hi0 = a < b ? b : a, hi1 = c < d ? d : c;
     return MinMax{lo0 < lo1 ? lo0 : lo1, hi0 < hi1 ? hi1 : hi0};
   }
+  // Level-1 node: samples 2i..2i+2 x 2j..2j+2, fewer at the east / north edge.
+  MinMax quad(int i, int j) const {
+    const int i0 = 2 * i, j0 = 2 * j;
+    const int i1 = i0 + 2 < width_ ? i0 + 2 : width_ - 1, j1 = j0 + 2 < height_ ? j0 + 2 : height_ - 1;
+    float lo = heights_[static_cast<std::size_t>(j0) * width_ + i0], hi = lo;
+    for (int r = j0; r <= j1; ++r) {
+      const float* row = heights_ + static_cast<std::size_t>(r) * width_;
+      for (int c = i0; c <= i1; ++c) {
+        lo = row[c] < lo ? row[c] : lo;
+        hi = row[c] > hi ? row[c] : hi;
+      }
+    }
+    return MinMax{lo, hi};
+  }
   float decode(std::uint16_t q) const { return base_ + static_cast<float>(q) * step_; }
 
   std::vector<Level> levels_;
   std::vector<Quantised> nodes_;
   const float* heights_ = nullptr;  // the heightfield's (level 0)
-  int width_ = 0;                   // samples per row of heights_
+  int width_ = 0, height_ = 0;       // samples per row / rows of heights_
   MinMax root_{0.f, 0.f};
   float base_ = 0.f, step_ = 1.f;  // height = base_ + q * step_
 };
