@@ -30,6 +30,7 @@ class HeightWindowTexture {
   long long centre_on(glm::ivec2 centre);
 
   GLuint id() const { return tex_.id(); }
+  bool placed() const { return window_.placed(); }  // centred at least once
   glm::ivec2 origin() const { return window_.origin(); }
   glm::ivec2 size() const { return {window_.size_x(), window_.size_y()}; }
   long long uploaded_samples() const { return uploaded_; }
