@@ -23,9 +23,9 @@ Heightfield decimate_heightfield(const Heightfield& hf, int step) {
 }
 
 int overview_step_for(int width, int height, int max_side) {
-  const int longest = std::max(width, height) - 1;
-  const int cells = std::max(max_side - 1, 1);
-  return std::max(1, (longest + cells - 1) / cells);
+  // (longest - 1) / step + 1 <= max_side  <=>  step > (longest - 1) / max_side.
+  const int longest = std::max(width, height);
+  return (longest - 1) / std::max(max_side, 1) + 1;
 }
 
 }  // namespace ig::terrain
