@@ -88,6 +88,13 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
   p.set("u_window_origin", windowed ? height_window_->origin() : glm::ivec2(0));
   p.set("u_window_size", windowed ? height_window_->size() : glm::ivec2(0));
   p.set("u_overview_step", overview_step_);
+  // Beyond one texture, sample coordinates reach 2^14 and more: interpolated
+  // across Level0's large triangles they lose up to a few hundredths of a
+  // sample in float, enough for Level0's clip test against Level1's square to
+  // drop fragments just outside it (single sky pixels, docs/results.md). So
+  // the test is relaxed by a tenth of a sample there; 0 (unchanged images)
+  // for DEMs that fit.
+  p.set("u_clip_margin", overview_step_ > 1 ? 0.1f : 0.0f);
   p.set("u_dem_size", glm::ivec2(heightfield_.width, heightfield_.height));
   p.set("u_spacing", glm::vec2(float(heightfield_.spacing_x_m), float(heightfield_.spacing_y_m)));
   p.set("u_height_range", glm::vec2(heightfield_.min_m, heightfield_.max_m));
