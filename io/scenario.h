@@ -40,6 +40,13 @@ struct TerrainSpec {
   double offset = 0.0;
   std::optional<double> spacing_m;  // overrides the file's spacing (images have none)
   std::optional<GeneratorSpec> generator;
+  // Samples a side of the full-resolution height window the two-level
+  // method reads around Level1 (render/height_window_texture.h); 0 = none.
+  int height_window = 0;
+  // Largest height-texture side the scene may use (0 = the GL limit); a DEM
+  // beyond it is drawn from an overview plus the height window, as beyond
+  // the GL limit (tests do that on a small DEM).
+  int texture_limit = 0;
 };
 
 struct RenderSpec {

@@ -52,8 +52,9 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   shading.sky_zenith = to_vec3(r.sky_zenith_rgb);
   shading.sky_horizon = to_vec3(r.sky_horizon_rgb);
   shading.fog_visibility_m = r.fog_visibility_m;
-  scene_ = std::make_unique<render::TerrainScene>(heightfield_, shading, r.imagery);
+  scene_ = std::make_unique<render::TerrainScene>(heightfield_, shading, r.imagery, scenario_.terrain.texture_limit);
   scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
+  scene_->enable_height_window(scenario_.terrain.height_window);
 
   for (const auto& spec : scenario_.channels) {
     ChannelView v;

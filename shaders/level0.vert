@@ -7,6 +7,7 @@ layout(location = 0) in ivec2 a_sample;
 layout(location = 1) in float a_lift;  // upper-envelope lift (0 without render.twolevel.level0_envelope)
 
 uniform sampler2D u_height;
+uniform int u_overview_step;  // > 1: u_height is an overview; Level0 is built on it, so a_sample is a multiple
 uniform vec2 u_spacing;
 uniform ivec2 u_eye_sample;  // floor(eye / spacing)
 uniform vec3 u_eye_frac;     // eye - eye_sample * spacing (xy), eye height (z)
@@ -17,7 +18,7 @@ out vec3 v_rel;
 out vec2 v_sample;
 
 void main() {
-  float h = texelFetch(u_height, a_sample, 0).r + a_lift;
+  float h = texelFetch(u_height, a_sample / max(u_overview_step, 1), 0).r + a_lift;
   vec3 rel = vec3(vec2(a_sample - u_eye_sample) * u_spacing - u_eye_frac.xy, h - u_eye_frac.z);
   // Curvature: the same drop as terrain_grid.vert.
   if (u_earth_radius_m > 0.0) {

@@ -8,6 +8,10 @@ layout(location = 0) in ivec2 a_local;
 layout(location = 1) in vec2 a_wall;   // wall vertices: (1, z) = at absolute height z ((0, 0) when unbound)
 
 uniform sampler2D u_height;   // R32F metres, texelFetch (exact)
+uniform sampler2D u_height_window;  // the same heights around a point, wrap-around (render/height_window_texture.h)
+uniform ivec2 u_window_origin;
+uniform ivec2 u_window_size;  // (0, 0): no window
+uniform int u_overview_step;  // > 1: u_height is an overview (outside the window: its nearest sample below)
 uniform ivec2 u_dem_size;     // samples
 uniform vec2 u_spacing;       // metres per sample (x east, y north)
 uniform ivec2 u_origin;       // grid origin in samples (may lie outside the DEM)
@@ -22,7 +26,11 @@ void main() {
   // Vertices past the DEM's edges collapse onto the edge (zero-area triangles).
   ivec2 s = clamp(u_origin + a_local, ivec2(0), u_dem_size - 1);
   ivec2 local = s - u_origin;
-  float h = a_wall.x > 0.5 ? a_wall.y : texelFetch(u_height, s, 0).r;
+  ivec2 w = s - u_window_origin;
+  bool in_window = u_window_size.x > 0 && all(greaterThanEqual(w, ivec2(0))) && all(lessThan(w, u_window_size));
+  float h = a_wall.x > 0.5 ? a_wall.y
+          : in_window      ? texelFetch(u_height_window, s % max(u_window_size, ivec2(1)), 0).r
+                           : texelFetch(u_height, s / max(u_overview_step, 1), 0).r;
   vec3 rel = u_origin_rel + vec3(vec2(local) * u_spacing, h);
   // Curvature: drop below the eye's tangent plane, d^2 / (R + sqrt(R^2 - d^2))
   // (no cancellation in float; the same formula as terrain::curvature_drop).

@@ -6,6 +6,10 @@
 // imagery texture), one directional light, fog. So methods differ only in
 // where each pixel's coordinate lands.
 uniform sampler2D u_height;     // R32F, linear filtering for normals
+uniform sampler2D u_height_window;  // full-resolution window, wrap-around (render/height_window_texture.h)
+uniform ivec2 u_window_origin;  // the window's south-west sample
+uniform ivec2 u_window_size;    // (0, 0): no window
+uniform int u_overview_step;    // > 1: u_height is an overview, every u_overview_step-th sample
 uniform sampler2D u_imagery;    // RGB draped over the DEM (only when u_has_imagery)
 uniform bool u_has_imagery;
 uniform ivec2 u_dem_size;
@@ -16,6 +20,15 @@ uniform vec3 u_fog_color;
 uniform float u_fog_k;          // fog factor 1 - exp(-(k d)^2); 0 = no fog
 
 float height_at(vec2 s) {
+  // Inside the window, with the bilinear neighbour too (r <= size - 2: the
+  // texel past the window's last wraps to its first), from the window.
+  if (u_window_size.x > 0) {
+    vec2 r = s - vec2(u_window_origin);
+    if (all(greaterThanEqual(r, vec2(0.0))) && all(lessThanEqual(r, vec2(u_window_size - 2))))
+      return textureLod(u_height_window, (s + 0.5) / vec2(u_window_size), 0.0).r;
+  }
+  if (u_overview_step > 1)  // overview sample k is DEM sample k * step
+    return textureLod(u_height, (s / float(u_overview_step) + 0.5) / vec2(textureSize(u_height, 0)), 0.0).r;
   return textureLod(u_height, (s + 0.5) / vec2(u_dem_size), 0.0).r;
 }
 

@@ -1,6 +1,7 @@
 // The one place that maps method names to implementations.
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "render/cdlod_method.h"
 #include "render/chunked_method.h"
@@ -24,6 +25,15 @@ std::vector<std::string> method_names() {
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
                                            const std::string& shader_dir, const TwoLevelOptions& twolevel,
                                            std::optional<double> knob) {
+  // Beyond the GL texture limit only the two-level method draws (it reads
+  // full resolution through the scene's height window); the others would
+  // need the whole DEM in one texture.
+  if (scene.overview_step() > 1 && name != "twolevel") {
+    const auto& hf = scene.heightfield();
+    throw std::invalid_argument("method '" + name + "' cannot draw " + hf.source + " (" + std::to_string(hf.width) +
+                                "x" + std::to_string(hf.height) + "): it needs the whole DEM in one texture and the GL "
+                                "height-texture limit is " + std::to_string(scene.texture_limit()) + "; use the twolevel method");
+  }
   if (name == "reference") return std::make_unique<ReferenceMethod>(scene, shader_dir);
   if (name == "twolevel") {
     TwoLevelOptions o = twolevel;

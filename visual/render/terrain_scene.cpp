@@ -6,28 +6,35 @@
 #include <vector>
 
 #include "gl/gl_context.h"
+#include "terrain/heightfield_overview.h"
 #include "terrain/imagery_loader.h"
 
 namespace ig::render {
 
 TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& shading,
-                           const std::optional<std::string>& imagery_path)
+                           const std::optional<std::string>& imagery_path, int texture_limit)
     : heightfield_(hf), shading_(shading) {
   if (hf.width < 2 || hf.height < 2 || hf.heights.size() != size_t(hf.width) * size_t(hf.height))
     throw std::invalid_argument(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
                                 " samples: a terrain needs at least 2 x 2 samples to form a surface");
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  if (hf.width > max_size || hf.height > max_size)
-    throw gl::GlError(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
-                      " exceeds the GL texture limit " + std::to_string(max_size));
   shading_.sun_direction = glm::normalize(shading_.sun_direction);
 
   const auto t0 = std::chrono::steady_clock::now();
+  const int limit = texture_limit > 0 ? std::min(texture_limit, int(max_size)) : int(max_size);
+  texture_limit_ = limit;
+  if (hf.width > limit || hf.height > limit) {
+    // Beyond one texture: an overview for the whole DEM, full resolution in a window.
+    overview_step_ = terrain::overview_step_for(hf.width, hf.height, std::min(kOverviewSide, limit));
+    overview_ = std::make_unique<terrain::Heightfield>(terrain::decimate_heightfield(hf, overview_step_));
+    height_window_ = std::make_unique<HeightWindowTexture>(hf, std::min(kDefaultHeightWindow, limit));
+  }
+  const terrain::Heightfield& tex = texture_heightfield();
   height_tex_ = gl::create_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(height_tex_.id(), 1, GL_R32F, hf.width, hf.height);
+  glTextureStorage2D(height_tex_.id(), 1, GL_R32F, tex.width, tex.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(height_tex_.id(), 0, 0, 0, hf.width, hf.height, GL_RED, GL_FLOAT, hf.heights.data());
+  glTextureSubImage2D(height_tex_.id(), 0, 0, 0, tex.width, tex.height, GL_RED, GL_FLOAT, tex.heights.data());
   glTextureParameteri(height_tex_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(height_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(height_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -72,6 +79,22 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
     glBindTextureUnit(1, imagery_tex_.id());
     p.set("u_imagery", 1);
   }
+  // The height window on unit 5 (units 2-4 are the two-level method's).
+  const bool windowed = height_window_ && height_window_->placed();
+  if (windowed) {
+    glBindTextureUnit(5, height_window_->id());
+    p.set("u_height_window", 5);
+  }
+  p.set("u_window_origin", windowed ? height_window_->origin() : glm::ivec2(0));
+  p.set("u_window_size", windowed ? height_window_->size() : glm::ivec2(0));
+  p.set("u_overview_step", overview_step_);
+  // Beyond one texture, sample coordinates reach 2^14 and more: interpolated
+  // across Level0's large triangles they lose up to a few hundredths of a
+  // sample in float, enough for Level0's clip test against Level1's square to
+  // drop fragments just outside it (single sky pixels, docs/results.md). So
+  // the test is relaxed by a tenth of a sample there; 0 (unchanged images)
+  // for DEMs that fit.
+  p.set("u_clip_margin", overview_step_ > 1 ? 0.1f : 0.0f);
   p.set("u_dem_size", glm::ivec2(heightfield_.width, heightfield_.height));
   p.set("u_spacing", glm::vec2(float(heightfield_.spacing_x_m), float(heightfield_.spacing_y_m)));
   p.set("u_height_range", glm::vec2(heightfield_.min_m, heightfield_.max_m));
@@ -83,6 +106,15 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
   p.set("u_view_proj", camera.view_projection());
   p.set("u_earth_radius_m", float(camera.earth_radius_m));
   p.set("u_alpha", 1.0f);
+}
+
+void TerrainScene::enable_height_window(int size) {
+  if (size <= 0 && overview_) size = height_window_ ? height_window_->size().x : kDefaultHeightWindow;
+  height_window_ = size > 0 ? std::make_unique<HeightWindowTexture>(heightfield_, size) : nullptr;
+}
+
+long long TerrainScene::follow_window(glm::ivec2 centre) const {
+  return height_window_ ? height_window_->centre_on(centre) : 0;
 }
 
 const terrain::HeightPyramid& TerrainScene::height_pyramid() const {

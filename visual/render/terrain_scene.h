@@ -28,6 +28,7 @@
 
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
+#include "render/height_window_texture.h"
 #include "render/camera.h"
 #include "terrain/height_pyramid.h"
 #include "terrain/heightfield.h"
@@ -43,11 +44,20 @@ struct ShadingParams {
 
 class TerrainScene {
  public:
+  // Side of the overview of a DEM beyond the GL texture limit, and of the
+  // height window it then always has (issue 16).
+  static constexpr int kOverviewSide = 4097;
+  static constexpr int kDefaultHeightWindow = 4096;
+
   // Uploads the height texture (and imagery, only when given). Throws
   // std::invalid_argument for a heightfield with fewer than 2 x 2 samples
-  // (no surface to draw).
+  // (no surface to draw). A DEM larger than the GL texture limit gets an
+  // overview texture (every overview_step()-th sample, at most
+  // kOverviewSide a side) and a height window of kDefaultHeightWindow:
+  // only methods that draw through the window (twolevel) can draw it.
+  // texture_limit > 0 lowers the GL limit used for that decision (tests).
   TerrainScene(const terrain::Heightfield& heightfield, const ShadingParams& shading,
-               const std::optional<std::string>& imagery_path = std::nullopt);
+               const std::optional<std::string>& imagery_path = std::nullopt, int texture_limit = 0);
   TerrainScene(const TerrainScene&) = delete;
   TerrainScene& operator=(const TerrainScene&) = delete;
 
@@ -56,14 +66,40 @@ class TerrainScene {
   // Fog visibility in metres (0 = no fog); used from the next bind_common.
   void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
   GLuint height_texture() const { return height_tex_.id(); }
+  // DEM samples per height-texture sample: 1 when the texture is the whole
+  // DEM, > 1 when it is an overview (the DEM exceeds the texture limit).
+  int overview_step() const { return overview_step_; }
+  // The largest height-texture side used (the GL limit, or the lower one given).
+  int texture_limit() const { return texture_limit_; }
+  // What the height texture holds: the DEM, or its overview
+  // (terrain/heightfield_overview.h), e.g. to build Level0 on.
+  const terrain::Heightfield& texture_heightfield() const { return overview_ ? *overview_ : heightfield_; }
   bool has_imagery() const { return bool(imagery_tex_); }
   double upload_ms() const { return upload_ms_; }
   // Imagery texels of the DEM's footprint the image did not cover (grey).
   std::int64_t imagery_uncovered() const { return imagery_uncovered_; }
   // The min/max pyramid of the heightfield (ray casts, culling bounds),
   // built on first use and shared by every method and channel on this scene:
-  // it is view-independent and large (180 MB for a 4097^2 DEM).
+  // it is view-independent (5.6 MB for a 4097^2 DEM, terrain/height_pyramid.h).
   const terrain::HeightPyramid& height_pyramid() const;
+
+  // Full-resolution heights around a point in a size x size wrap-around
+  // texture (render/height_window_texture.h; issue 16, terrain beyond one
+  // texture). size <= 0: none (the default), except with an overview, which
+  // always keeps a window (kDefaultHeightWindow when size <= 0). Without an
+  // overview the whole-DEM texture stays and serves every read outside the
+  // window, so every height is the same with or without the window; with
+  // one, reads outside the window get the overview's (bilinear between its
+  // samples for shading). A method that draws near one point (the
+  // two-level method: Level1 and its band) keeps the window on it with
+  // follow_window(), and reads through it (shaders/terrain_shading.frag
+  // height_at, shaders/terrain_grid.vert).
+  void enable_height_window(int size);
+  // Centres the window on sample `centre` (clamped to the DEM), uploading
+  // what scrolled in; returns the samples uploaded (0 without a window).
+  // const: the window is a cache of heights the scene already serves.
+  long long follow_window(glm::ivec2 centre) const;
+  const HeightWindowTexture* height_window() const { return height_window_.get(); }
 
   // World position of sample (0, 0) at height 0 (default: the origin).
   const glm::dvec3& world_origin() const { return world_origin_; }
@@ -85,10 +121,14 @@ class TerrainScene {
   const terrain::Heightfield& heightfield_;
   ShadingParams shading_;
   gl::Texture height_tex_;
+  int overview_step_ = 1;
+  int texture_limit_ = 0;
+  std::unique_ptr<terrain::Heightfield> overview_;  // only beyond the texture limit
   gl::Texture imagery_tex_;  // empty without imagery
   double upload_ms_ = 0.0;
   std::int64_t imagery_uncovered_ = 0;
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
+  mutable std::unique_ptr<HeightWindowTexture> height_window_;  // see enable_height_window()
   glm::dvec3 world_origin_{0.0};
   double earth_radius_m_ = 0.0;
 };

@@ -10,6 +10,7 @@
 #include "lod/level0_budget.h"
 #include "lod/level0_envelope.h"
 #include "lod/level1_coverage_predictor.h"
+#include "render/scene_level0.h"
 
 namespace ig::render {
 namespace {
@@ -141,9 +142,9 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
       pyramid_(scene.height_pyramid()),
-      level0_(lod::z_ordered(lod::build_level0_mesh(scene.heightfield(),
-                                               lod::Level0Options{options_.level0_budget, 0.0, scene.earth_radius_m(),
-                                                                  options.level0_whole_error}))),
+      level0_(lod::z_ordered(build_scene_level0(scene,  // on the overview beyond the texture limit
+                                                lod::Level0Options{options_.level0_budget, 0.0, scene.earth_radius_m(),
+                                                                   options_.level0_whole_error}))),
       level0_heights_(level0_, scene.heightfield().width, scene.heightfield().height),
       block_mesh_(kBlockQuads),
       controller_(lod::level1_ladder(scene.heightfield().width, scene.heightfield().height, options.max_level1),
@@ -281,6 +282,7 @@ void TwoLevelMethod::update(const Camera& camera) {
   if (options_.eye_guard) apply_eye_guard(camera, n, ec_i, ec_j);
   n_ = n;
   origin_ = lod::level1_square_origin({ec_i, ec_j}, n, hf.width, hf.height);
+  scene_.follow_window(origin_ + (n - 1) / 2);  // the height window, if any, on Level1 (terrain_scene.h)
 
   // Band width: w_trans = (r0 / r1) * alpha * w1 (r1 = 1: Level1 is full
   // resolution), rounded to the band stride, at least one stride, at most w1 / 4.

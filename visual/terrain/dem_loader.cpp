@@ -242,16 +242,18 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
   const bool nodata_is_nan = has_nodata && std::isnan(nodata);
   const bool nodata_fits = has_nodata && !nodata_is_nan && std::fabs(nodata) <= FLT_MAX;
   const float nodata_f = nodata_fits ? float(nodata) : kSrtmVoid;
-  std::vector<std::uint8_t> state(n);
-  std::int64_t valid = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const float v = hf.heights[k];
-    const bool ok = std::isfinite(v) && v != kSrtmVoid && v != nodata_f;
-    state[k] = ok;
-    valid += ok;
-  }
+  const auto is_valid = [&](float v) { return std::isfinite(v) && v != kSrtmVoid && v != nodata_f; };
+  std::size_t valid = 0;
+  for (std::size_t k = 0; k < n; ++k) valid += is_valid(hf.heights[k]);
   if (valid == 0)
     throw DemError(path, "all " + std::to_string(n) + " samples are nodata");
+  // The void mask (a byte per sample, 420 MB for 20481^2) only when there
+  // are voids, so a void-free DEM's load peaks at its heights (issue 16).
+  std::vector<std::uint8_t> state;
+  if (valid < n) {
+    state.resize(n);
+    for (std::size_t k = 0; k < n; ++k) state[k] = is_valid(hf.heights[k]);
+  }
 
   // Band scale/offset and vertical units (feet) to metres, valid samples only.
   int has_scale = 0, has_offset = 0;
@@ -262,9 +264,9 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
   const double unit = vertical_unit_to_metres(GDALGetRasterUnitType(band));
   if (vscale != 1.0 || voffset != 0.0 || unit != 1.0) {
     for (std::size_t k = 0; k < n; ++k)
-      if (state[k]) hf.heights[k] = float((hf.heights[k] * vscale + voffset) * unit);
+      if (state.empty() || state[k]) hf.heights[k] = float((hf.heights[k] * vscale + voffset) * unit);
   }
-  hf.nodata_count = fill_voids(hf.heights, state, w, ht);
+  hf.nodata_count = state.empty() ? 0 : fill_voids(hf.heights, state, w, ht);
 
   // Georeferencing and spacing.
   std::array<double, 6> gt{};

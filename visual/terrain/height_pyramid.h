@@ -4,22 +4,33 @@
 //
 // A cell (i, j) is the quad between samples (i, j), (i+1, j), (i, j+1),
 // (i+1, j+1); a Heightfield of width x height samples has
-// (width-1) x (height-1) cells. Level 0 holds one node per cell: the min and
+// (width-1) x (height-1) cells. Level 0 has one node per cell: the min and
 // max of its 4 corner heights (which bound both rendered triangles of the
 // quad, since the surface interpolates linearly between corners). Level k+1
 // node (i, j) covers level-k nodes (2i..2i+1, 2j..2j+1) — fewer on a ragged
-// right/top edge when the level-k size is odd — and stores their min/max.
+// right/top edge when the level-k size is odd — and bounds their min/max.
 // Levels halve (rounding up) in each direction independently until a single
 // root node of 1 x 1 remains, so non-square and non-power-of-two grids work.
 // A level-k node (i, j) covers cells [i * 2^k, min((i+1) * 2^k, cells_x()))
 // in x, and the same in y.
 //
-// Memory: 8 bytes per level-0 node, about 8 * 4/3 bytes per cell overall
-// (~180 MB for a 4097 x 4097 DEM, i.e. ~2.7x the float heights). Build time
-// ~0.15-0.2 s for 4097 x 4097 on one core (see docs/ray-cast.md).
+// Compact storage (issue 16: terrain beyond a memory budget): levels 0 and 1
+// are not stored, their nodes are read from the heights (exact: 2 x 2 and
+// 3 x 3 samples, which the ray cast reads next anyway). Levels >= 2 are
+// stored as 16-bit min/max quantised over the whole height range, the
+// minimum rounded down and the maximum up (with one step of margin), so
+// every node still BOUNDS its cells (lo <= true min, hi >= true max),
+// loosened by at most ~3 steps of (max - min) / 65000 (0.07 m on a 4500 m
+// range). The root is exact. Memory: 4 bytes per level-2 node (a level-2
+// node covers 16 cells) x 4/3, about 0.33 bytes per sample (5.6 MB for
+// 4097 x 4097, 140 MB for 20481 x 20481; was 179 MB for 4097 x 4097 at 8
+// bytes per cell with a stored float level 0). Bounds that are looser only
+// make the ray cast visit a few more nodes; its answers are unchanged.
 //
-// The pyramid is a snapshot: rebuild it after editing the heights (cast_ray
-// checks the dimensions match but cannot detect edited heights).
+// The pyramid keeps a pointer to the heightfield's heights (level 0): the
+// heightfield must outlive the pyramid and its heights must not be
+// reallocated. It is a snapshot: rebuild it after editing the heights
+// (cast_ray checks the dimensions match but cannot detect edited heights).
 
 #include <cstddef>
 #include <cstdint>
@@ -53,34 +64,80 @@ class HeightPyramid {
   int num_levels() const { return static_cast<int>(levels_.size()); }
   int level_width(int level) const { return levels_[level].nx; }
   int level_height(int level) const { return levels_[level].ny; }
-  // Min/max height of node (i, j) at the given level; no bounds checking.
-  MinMax node(int level, int i, int j) const { return nodes_[index(levels_[level], i, j)]; }
-  // Hint for traversals: start fetching the 2x2 block holding node (i, j).
+  // Bounds of node (i, j) at the given level: exact at levels 0 and 1 (the
+  // heights), conservative above (see the top of this file); no bounds
+  // checking.
+  MinMax node(int level, int i, int j) const {
+    if (level == 0) return cell(i, j);
+    if (level == 1) return quad(i, j);
+    const Quantised q = nodes_[index(levels_[level], i, j)];
+    return MinMax{decode(q.lo), decode(q.hi)};
+  }
+  // Hint for traversals: start fetching the 2x2 block holding node (i, j)
+  // (at level 0: the two rows of heights under it).
   void prefetch(int level, int i, int j) const {
 #if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(nodes_.data() + index(levels_[level], i, j));
+    if (level <= 1) {  // the 2 or 3 rows of heights under it
+      const int step = level == 0 ? 1 : 2;
+      const float* h = heights_ + static_cast<std::size_t>(j * step) * width_ + i * step;
+      __builtin_prefetch(h);
+      __builtin_prefetch(h + width_);
+      if (level == 1 && j * 2 + 2 < height_) __builtin_prefetch(h + 2 * width_);
+    } else {
+      __builtin_prefetch(nodes_.data() + index(levels_[level], i, j));
+    }
 #endif
   }
-  MinMax root() const { return nodes_[index(levels_.back(), 0, 0)]; }
-  // Bytes held by the node array.
-  std::size_t memory_bytes() const { return nodes_.size() * sizeof(MinMax); }
+  // Exact min/max of all heights.
+  MinMax root() const { return root_; }
+  // Bytes held by the stored levels (levels 0 and 1 are read from the heights).
+  std::size_t memory_bytes() const { return nodes_.size() * sizeof(Quantised); }
 
  private:
-  // Storage: each level is a row-major grid of 2x2 blocks of nodes, a block
-  // being 4 consecutive MinMax (32 bytes: (0,0), (1,0), (0,1), (1,1)), so the
-  // 4 children of a node share one cache line. Odd-sized levels are padded
-  // to whole blocks (padding nodes are never read). Levels start at 64-byte
-  // boundaries of the buffer, counted from base_ (aligned when built).
+  struct Quantised {
+    std::uint16_t lo, hi;
+  };
+  // Storage: each stored level (>= 2) is a row-major grid of 2x2 blocks of
+  // nodes, a block being 4 consecutive Quantised ((0,0), (1,0), (0,1),
+  // (1,1)), so the 4 children of a node are read together. Odd-sized
+  // levels are padded to whole blocks (padding nodes are never read).
   struct Level {
     int nx = 0, ny = 0;
     int blocks_x = 0;
-    std::size_t offset = 0;  // into nodes_, including base_
+    std::size_t offset = 0;  // into nodes_ (unused for level 0)
   };
   static std::size_t index(const Level& l, int i, int j) {
     return l.offset + (static_cast<std::size_t>(j >> 1) * l.blocks_x + (i >> 1)) * 4 + ((j & 1) << 1) + (i & 1);
   }
+  MinMax cell(int i, int j) const {
+    const float* r0 = heights_ + static_cast<std::size_t>(j) * width_ + i;
+    const float* r1 = r0 + width_;
+    const float a = r0[0], b = r0[1], c = r1[0], d = r1[1];
+    const float lo0 = a < b ? a : b, lo1 = c < d ? c : d, hi0 = a < b ? b : a, hi1 = c < d ? d : c;
+    return MinMax{lo0 < lo1 ? lo0 : lo1, hi0 < hi1 ? hi1 : hi0};
+  }
+  // Level-1 node: samples 2i..2i+2 x 2j..2j+2, fewer at the east / north edge.
+  MinMax quad(int i, int j) const {
+    const int i0 = 2 * i, j0 = 2 * j;
+    const int i1 = i0 + 2 < width_ ? i0 + 2 : width_ - 1, j1 = j0 + 2 < height_ ? j0 + 2 : height_ - 1;
+    float lo = heights_[static_cast<std::size_t>(j0) * width_ + i0], hi = lo;
+    for (int r = j0; r <= j1; ++r) {
+      const float* row = heights_ + static_cast<std::size_t>(r) * width_;
+      for (int c = i0; c <= i1; ++c) {
+        lo = row[c] < lo ? row[c] : lo;
+        hi = row[c] > hi ? row[c] : hi;
+      }
+    }
+    return MinMax{lo, hi};
+  }
+  float decode(std::uint16_t q) const { return base_ + static_cast<float>(q) * step_; }
+
   std::vector<Level> levels_;
-  std::vector<MinMax> nodes_;
+  std::vector<Quantised> nodes_;
+  const float* heights_ = nullptr;  // the heightfield's (level 0)
+  int width_ = 0, height_ = 0;       // samples per row / rows of heights_
+  MinMax root_{0.f, 0.f};
+  float base_ = 0.f, step_ = 1.f;  // height = base_ + q * step_
 };
 
 }  // namespace ig::terrain

@@ -41,7 +41,7 @@ struct LosHit {
 
 class TerrainQuery {
  public:
-  // Builds the min/max pyramid (about 0.2 s and 180 MB for 4097 x 4097).
+  // Builds the min/max pyramid (about 0.1 s and 5.6 MB for 4097 x 4097).
   // hf must outlive the query and not change. earth_radius_m <= 0: flat.
   TerrainQuery(const Heightfield& hf, double earth_radius_m);
   // Uses a pyramid built from hf already (the scene's), which must outlive

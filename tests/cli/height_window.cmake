@@ -1,0 +1,93 @@
+# Terrain beyond one texture (issue 16) on the Sierra DEM, made small:
+#  * same_picture: the two-level method reading heights through a small
+#    wrap-around height window (terrain.height_window,
+#    render/height_window_texture.h) renders the same picture as with the
+#    whole-DEM texture alone, on a flight that moves the window;
+#  * overview: with the texture limit lowered below the DEM
+#    (terrain.texture_limit 2049: an overview every 2nd sample, Level0 built
+#    on it, full resolution in a 512-sample window) ig run renders, and a
+#    baseline method is refused with a message naming it and the limit.
+# Two roles, like dem_tiles.cmake:
+#  * included by tests/CMakeLists.txt: registers cli.height_window.* (skip without IG_DEM_DIR);
+#  * run as `cmake -P height_window.cmake -DIG=... -DOUT=... -DCASE=...`.
+
+if(CMAKE_SCRIPT_MODE_FILE)
+  if("$ENV{IG_DEM_DIR}" STREQUAL "")
+    message("IG_DEM_DIR not set: height-window test skipped")
+    cmake_language(EXIT 77)
+  endif()
+  set(DEM "$ENV{IG_DEM_DIR}/sierra_nevada_3arcsec_4097.tif")
+  file(REMOVE_RECURSE "${OUT}")
+  file(MAKE_DIRECTORY "${OUT}")
+  if(CASE STREQUAL "overview")
+    file(WRITE "${OUT}/overview.json" "{\"name\": \"overview\",
+  \"terrain\": {\"file\": \"${DEM}\", \"texture_limit\": 2049, \"height_window\": 512},
+  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
+  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
+    {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
+    {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}]},
+  \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
+    execute_process(COMMAND "${IG}" run "${OUT}/overview.json" --out "${OUT}/run" --headless --quiet
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0 OR NOT EXISTS "${OUT}/run/final.png")
+      message(FATAL_ERROR "ig run with an overview: exit ${rc}\n${out}\n${err}")
+    endif()
+    execute_process(COMMAND "${IG}" run "${OUT}/overview.json" --out "${OUT}/run_roam" --headless --quiet --method roam
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message("ig run --method roam: exit ${rc}: ${err}")
+    if(rc EQUAL 0 OR NOT err MATCHES "method 'roam' cannot draw .*4097x4097.*texture limit is 2049")
+      message(FATAL_ERROR "roam beyond the texture limit must be refused naming the method and the limit")
+    endif()
+    return()
+  endif()
+  foreach(window 0 256)
+    file(WRITE "${OUT}/w${window}.json" "{\"name\": \"window_${window}\",
+  \"terrain\": {\"file\": \"${DEM}\", \"height_window\": ${window}},
+  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
+  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
+    {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
+    {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}]},
+  \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
+    execute_process(COMMAND "${IG}" run "${OUT}/w${window}.json" --out "${OUT}/run_${window}" --headless --quiet
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "ig run with height_window ${window}: exit ${rc}\n${out}\n${err}")
+    endif()
+  endforeach()
+  # The window was used: its first fill (256 x 256 floats) and its updates
+  # show in the frames' upload_bytes on top of what the run without it uploads.
+  function(total_uploads run var)
+    file(STRINGS "${OUT}/${run}/frames.csv" lines)
+    list(GET lines 0 header)
+    string(REPLACE "," ";" header "${header}")
+    list(FIND header upload_bytes col)
+    list(REMOVE_AT lines 0)
+    set(sum 0)
+    foreach(line ${lines})
+      string(REPLACE "," ";" cells "${line}")
+      list(GET cells ${col} v)
+      math(EXPR sum "${sum} + ${v}")
+    endforeach()
+    set(${var} ${sum} PARENT_SCOPE)
+  endfunction()
+  total_uploads(run_0 up0)
+  total_uploads(run_256 up256)
+  message("upload_bytes over the flight: ${up0} without the window, ${up256} with it")
+  math(EXPR extra "${up256} - ${up0}")
+  if(extra LESS 262144)
+    message(FATAL_ERROR "the height window uploaded ${extra} bytes, less than its first fill (262144)")
+  endif()
+  file(SHA256 "${OUT}/run_0/final.png" a)
+  file(SHA256 "${OUT}/run_256/final.png" b)
+  if(NOT a STREQUAL b)
+    message(FATAL_ERROR "final.png with a 256-sample height window differs from the whole-DEM texture's")
+  endif()
+  return()
+endif()
+
+foreach(case same_picture overview)
+  add_test(NAME cli.height_window.${case}
+    COMMAND ${CMAKE_COMMAND} -DIG=$<TARGET_FILE:ig> -DOUT=${CMAKE_BINARY_DIR}/test-out/height_window_${case}
+      -DCASE=${case} -P ${CMAKE_CURRENT_LIST_FILE})
+  set_tests_properties(cli.height_window.${case} PROPERTIES LABELS cli SKIP_RETURN_CODE 77)
+endforeach()

@@ -1,0 +1,143 @@
+#!/usr/bin/env python3
+"""Issue 16's big-terrain benchmark: `ig run` on DEMs beyond one GL texture,
+made at bench time under /tmp and deleted after (nothing large is kept).
+
+usage: IG_DEM_DIR=... tools/bench/big_terrain.py BUILD_DIR OUT.md [--duration S] [--size WxH]
+
+Cases: the Sierra DEM itself (4097², fits one texture: the reference row,
+flying over its interior around lat 36.7, lon -118.3), and a VRT of 5 x 5
+Sierra copies overlapping by one sample (20481², beyond the 16384 texture
+limit: overview + height window), flying across the corner where four
+copies meet (lat 36.0, lon -117.0: tile boundaries in both directions).
+With --cases including sierra_8x8_32769: 8 x 8 copies (32769², the size
+of the issue's synthetic 32769² case, made the same cheap way; its float
+heights alone are 4.3 GB, over the 2.5 GB goal). Both fly 250 kt
+(128.6 m/s) at 50-150 m above ground, heading 135. Measured
+per case, written to OUT.md as a Markdown table: load-to-first-frame time,
+peak resident memory (/usr/bin/time -v), bytes per sample, frame-time p99,
+the height window's uploads ("page-ins": samples per second, largest per
+frame), and frames that waited on I/O.
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SPEED = 128.6  # m/s = 250 kt
+
+
+def flight(duration_s, centre):
+    # Straight line heading 135 deg through centre (lat, lon), centred on it.
+    half = SPEED * duration_s / 2
+    dn = half / 111000.0 * 0.7071
+    de = half / 90060.0 * 0.7071  # metres per degree of longitude at 36 deg N
+    keys = []
+    n = 5
+    agl = [50, 150, 80, 120, 60]
+    for k in range(n):
+        f = k / (n - 1)
+        lat = centre[0] + dn - 2 * dn * f
+        lon = centre[1] - de + 2 * de * f
+        keys.append({"t": duration_s * f, "position": [lat, lon, agl[k]], "hpr": [135, -3, 0]})
+    return {"frame": "geodetic", "altitude": "agl", "keys": keys}
+
+
+def p99(values):
+    v = sorted(values)
+    return v[min(len(v) - 1, int(0.99 * len(v)))] if v else 0.0
+
+
+def run_case(ig, name, dem, centre, out_dir, args):
+    w, h = args.size
+    scenario = {"name": name, "terrain": {"file": dem},
+                "render": {"width": w, "height": h, "fov_y_deg": 60},
+                "path": flight(args.duration, centre), "time": {"step_s": args.step, "duration_s": args.duration}}
+    sc = os.path.join(out_dir, name + ".json")
+    with open(sc, "w") as f:
+        json.dump(scenario, f)
+    run_dir = os.path.join(out_dir, "run_" + name)
+    cmd = ["/usr/bin/time", "-v", ig, "run", sc, "--out", run_dir, "--headless", "--quiet"]
+    t0 = time.monotonic()
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    elapsed = time.monotonic() - t0
+    if p.returncode != 0:
+        return {"name": name, "error": (p.stderr.strip().splitlines() or ["exit %d" % p.returncode])[0]}
+    rss_kb = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", p.stderr).group(1))
+    summary = json.load(open(os.path.join(run_dir, "summary.json")))
+    rows = list(csv.DictReader(open(os.path.join(run_dir, "frames.csv"))))
+    walls = [float(r["wall_ms"]) for r in rows]
+    uploads = [int(r["upload_bytes"]) for r in rows]
+    terrain = summary["terrain"]
+    samples = terrain["width"] * terrain["height"]
+    return {
+        "name": name,
+        "size": "%dx%d" % (terrain["width"], terrain["height"]),
+        "load_s": terrain["load_ms"] / 1000,
+        # Process start to the end of frame 1: all but the later frames' wall time.
+        "first_frame_s": elapsed - sum(walls[1:]) / 1000,
+        "rss_mb": rss_kb / 1024,
+        "bytes_per_sample": rss_kb * 1024 / samples,
+        "frames": len(rows),
+        "p99_ms": summary["frame_time"]["p99_ms"],
+        "median_ms": summary["frame_time"]["median_ms"],
+        "upload_mb_s": sum(uploads[1:]) / 1e6 / max(args.duration - args.step, 1e-9),
+        "upload_max_kb": max(uploads[1:] or [0]) / 1e3,
+        "lod_p99_ms": p99([float(r["lod_ms"]) for r in rows[1:]]),
+        "terrain_p99_ms": p99([float(r["terrain_ms"]) for r in rows[1:]]),
+        "elapsed_s": elapsed,
+    }
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("build")
+    ap.add_argument("out")
+    ap.add_argument("--duration", type=float, default=40.0)
+    ap.add_argument("--step", type=float, default=0.1)
+    ap.add_argument("--size", default="640x480")
+    ap.add_argument("--cases", default="sierra_4097,sierra_5x5_20481",
+                    help="comma-separated: sierra_4097, sierra_5x5_20481, sierra_8x8_32769")
+    args = ap.parse_args()
+    args.size = tuple(int(v) for v in args.size.split("x"))
+    dem_dir = os.environ.get("IG_DEM_DIR")
+    if not dem_dir:
+        sys.exit("IG_DEM_DIR not set")
+    ig = os.path.join(args.build, "bin", "ig")
+    sierra = os.path.join(dem_dir, "sierra_nevada_3arcsec_4097.tif")
+    results = []
+    with tempfile.TemporaryDirectory(prefix="ig_big_") as tmp:
+        cases = {"sierra_4097": (sierra, (36.7, -118.3))}
+        for n in (5, 8):
+            vrt = os.path.join(tmp, "sierra_%dx%d.vrt" % (n, n))
+            subprocess.run([sys.executable, os.path.join(HERE, "make_copies_vrt.py"), ig, sierra, str(n), vrt],
+                           check=True)
+            cases["sierra_%dx%d_%d" % (n, n, 4096 * n + 1)] = (vrt, (36.0, -117.0))  # a corner of four copies
+        for name in args.cases.split(","):
+            dem, centre = cases[name]
+            r = run_case(ig, name, dem, centre, tmp, args)
+            print(json.dumps(r), flush=True)
+            results.append(r)
+    with open(args.out, "w") as f:
+        f.write("| case | samples | load (s) | start to first frame (s) | peak RSS (MB) | RSS bytes / sample | "
+                "frames | frame median / p99 (ms) | LOD / terrain p99 (ms) | uploads (MB per s of flight, max KB per frame) | frames waiting on I/O |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in results:
+            if "error" in r:
+                f.write("| %s | refused: %s |\n" % (r["name"], r["error"]))
+                continue
+            f.write("| %s | %s | %.1f | %.1f | %.0f | %.2f | %d | %.0f / %.0f | %.1f / %.0f | %.2f, %.0f | 0 (no I/O after load) |\n" % (
+                r["name"], r["size"], r["load_s"], r["first_frame_s"], r["rss_mb"], r["bytes_per_sample"], r["frames"],
+                r["median_ms"], r["p99_ms"], r["lod_p99_ms"], r["terrain_p99_ms"], r["upload_mb_s"], r["upload_max_kb"]))
+        f.write("\nCommand: `IG_DEM_DIR=%s %s %s %s --duration %g --step %g --size %dx%d --cases %s`\n" % (
+            dem_dir, os.path.relpath(__file__), args.build, args.out, args.duration, args.step, *args.size, args.cases))
+    print("wrote", args.out)
+
+
+if __name__ == "__main__":
+    main()

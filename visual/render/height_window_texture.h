@@ -1,0 +1,45 @@
+#pragma once
+// Full-resolution heights around a point, for DEMs larger than one GL
+// texture (issue 16): a size x size R32F texture holding the window
+// terrain::ToroidalWindow describes, addressed wrap-around (sample (i, j) in
+// texel (i mod size, j mod size), GL_REPEAT), so a shader reads sample s at
+// texel coordinate (s + 0.5) / size while s is inside the window, with
+// linear filtering correct across the wrap seam. Moving the window uploads
+// only the rows and columns that scrolled in (glTextureSubImage2D straight
+// from the heightfield's rows, no staging copy).
+
+#include <epoxy/gl.h>
+
+#include <glm/vec2.hpp>
+
+#include "gl/gl_objects.h"
+#include "terrain/heightfield.h"
+#include "terrain/toroidal_window.h"
+
+namespace ig::render {
+
+class HeightWindowTexture {
+ public:
+  // hf must outlive the texture. size is clamped to the DEM (and must fit
+  // the GL texture limit; throws gl::GlError otherwise).
+  HeightWindowTexture(const terrain::Heightfield& hf, int size);
+
+  // Moves the window so it is centred on sample `centre` (clamped to the
+  // DEM) and uploads what scrolled in; returns the samples uploaded (0 when
+  // it did not move).
+  long long centre_on(glm::ivec2 centre);
+
+  GLuint id() const { return tex_.id(); }
+  bool placed() const { return window_.placed(); }  // centred at least once
+  glm::ivec2 origin() const { return window_.origin(); }
+  glm::ivec2 size() const { return {window_.size_x(), window_.size_y()}; }
+  long long uploaded_samples() const { return uploaded_; }
+
+ private:
+  const terrain::Heightfield& hf_;
+  terrain::ToroidalWindow window_;
+  gl::Texture tex_;
+  long long uploaded_ = 0;
+};
+
+}  // namespace ig::render
