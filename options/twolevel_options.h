@@ -17,7 +17,7 @@ struct TwoLevelOptions {
   // session when it sets up its channels; a method given 0 directly uses
   // the reference display's budget.
   int level0_budget = 0;
-  // Level1 also covers the ground under a low eye (see apply_eye_guard).
+  // Level1 also covers the ground under a low eye (lod/level1_selection.h).
   bool eye_guard = true;
   double a1 = 0.50, a2 = 0.80;    // Level1 grows when R < a1, shrinks when R > a2
   double alpha = 2000.0;          // band factor: w_trans = (r0 / r1) * alpha * w1

@@ -10,31 +10,13 @@
 #include "lod/level0_budget.h"
 #include "lod/level0_envelope.h"
 #include "lod/level1_coverage_predictor.h"
+#include "lod/level1_selection.h"
 #include "render/scene_level0.h"
 
 namespace ig::render {
 namespace {
 
-constexpr int kBlockQuads = 32;  // Level1 is drawn as blocks of 32 x 32 quads, each frustum-culled
-
-// Min/max height over cells [i0, i1) x [j0, j1) from a pyramid level whose
-// nodes are at least as large as the rectangle (a few nodes, conservative).
-terrain::HeightPyramid::MinMax rect_minmax(const terrain::HeightPyramid& p, int i0, int j0, int i1, int j1) {
-  i0 = std::clamp(i0, 0, p.cells_x() - 1);
-  j0 = std::clamp(j0, 0, p.cells_y() - 1);
-  i1 = std::clamp(i1, i0 + 1, p.cells_x());
-  j1 = std::clamp(j1, j0 + 1, p.cells_y());
-  int level = 0;
-  while (level + 1 < p.num_levels() && (1 << (level + 1)) <= std::max(i1 - i0, j1 - j0)) ++level;
-  terrain::HeightPyramid::MinMax m{1e30f, -1e30f};
-  for (int j = j0 >> level; j <= (j1 - 1) >> level; ++j)
-    for (int i = i0 >> level; i <= (i1 - 1) >> level; ++i) {
-      const auto n = p.node(level, i, j);
-      m.lo = std::min(m.lo, n.lo);
-      m.hi = std::max(m.hi, n.hi);
-    }
-  return m;
-}
+constexpr int kBlockQuads = lod::kLevel1BlockQuads;
 
 // Whether any part of the terrain can be in view: the frustum against the
 // min/max pyramid's boxes, descending to nodes of 64 cells. The single
@@ -199,40 +181,6 @@ TwoLevelMethod::SizeMeshes& TwoLevelMethod::meshes_for(int n, int band_w) {
   return *slot;
 }
 
-// Level0 (a few thousand triangles for the whole DEM) is off by up to
-// max_error_m. Seen from a height comparable to that error, the coarse
-// surface beside the eye can pass above the eye or cut through the view:
-// sky through the ground, or a wall of Level0 hiding everything. So while
-// the eye is that low over the DEM, Level1 (exact) must also cover the ground
-// under the eye: its size is raised to the smallest ladder size whose square
-// around E holds the eye with a margin; when even the largest cannot, the
-// square is moved from E towards the eye so it starts just behind the eye.
-void TwoLevelMethod::apply_eye_guard(const Camera& camera, int& n, int& ec_i, int& ec_j) {
-  const auto& hf = scene_.heightfield();
-  const glm::dvec3& p = camera.position;
-  const double ei = p.x / hf.spacing_x_m, ej = p.y / hf.spacing_y_m;
-  if (ei < 0 || ej < 0 || ei > hf.width - 1 || ej > hf.height - 1) return;  // not over the DEM
-  const double agl = p.z - hf.sample_bilinear(p.x, p.y);
-  if (!(agl < kEyeGuardHeightFactor * std::max(level0_.max_error_m, 1.0))) return;
-  const double di = std::fabs(ei - ec_i), dj = std::fabs(ej - ec_j);
-  const int needed = 2 * int(std::ceil(std::max(di, dj))) + 2 * kEyeGuardMarginSamples + 1;
-  const auto& ladder = controller_.ladder();
-  int guarded = ladder.back();
-  for (int size : ladder)
-    if (size >= needed) {
-      guarded = size;
-      break;
-    }
-  eye_guarded_ = guarded > n || needed > ladder.back();
-  n = std::max(n, guarded);
-  if (needed > n) {  // too far for the largest square: start it behind the eye, towards E
-    const double half = 0.5 * (n - 1) - kEyeGuardMarginSamples;
-    const double d = std::max(di, dj);
-    ec_i = int(std::lround(ei + (ec_i - ei) * half / d));
-    ec_j = int(std::lround(ej + (ec_j - ej) * half / d));
-  }
-}
-
 double TwoLevelMethod::read_previous_ratio() {
   // Results of the frame before: never wait for them (no stall); if the
   // driver has not finished, keep the size one more frame.
@@ -278,41 +226,30 @@ void TwoLevelMethod::update(const Camera& camera) {
   } else {
     n = controller_.update(ratio);
   }
-  eye_guarded_ = false;
-  if (options_.eye_guard) apply_eye_guard(camera, n, ec_i, ec_j);
-  n_ = n;
-  origin_ = lod::level1_square_origin({ec_i, ec_j}, n, hf.width, hf.height);
+  const glm::dvec2 eye(camera.position.x / hf.spacing_x_m, camera.position.y / hf.spacing_y_m);
+  lod::Level1Placement place{n, {ec_i, ec_j}, false};
+  if (options_.eye_guard)
+    place = lod::guard_level1_for_eye(place, eye, camera.position.z - hf.sample_bilinear(camera.position.x, camera.position.y),
+                                      level0_.max_error_m, controller_.ladder(), {hf.width, hf.height});
+  eye_guarded_ = place.eye_guarded;
+  n = n_ = place.n;
+  origin_ = lod::level1_square_origin(place.centre, n, hf.width, hf.height);
   scene_.follow_window(origin_ + (n - 1) / 2);  // the height window, if any, on Level1 (terrain_scene.h)
-
-  // Band width: w_trans = (r0 / r1) * alpha * w1 (r1 = 1: Level1 is full
-  // resolution), rounded to the band stride, at least one stride, at most w1 / 4.
-  const int stride = std::max(1, options_.band_stride);
-  const double w = level0_resolution_ * options_.alpha * (n - 1);
-  band_w_ = std::clamp(int(std::lround(w / stride)) * stride, stride, std::max(stride, (n - 1) / 4 / stride * stride));
+  band_w_ = lod::band_width_samples(level0_resolution_, options_.alpha, n, options_.band_stride);
 
   visible_blocks_.clear();
   if (!terrain_visible_) {
     band_visible_ = false;
     return;
   }
-  const int blocks = (n - 1 + kBlockQuads - 1) / kBlockQuads;
-  for (int bj = 0; bj < blocks; ++bj)
-    for (int bi = 0; bi < blocks; ++bi) {
-      const glm::ivec2 o = origin_ + glm::ivec2(bi, bj) * kBlockQuads;
-      const auto mm = rect_minmax(pyramid_, o.x, o.y, o.x + kBlockQuads, o.y + kBlockQuads);
-      const glm::dvec3 lo(o.x * hf.spacing_x_m, o.y * hf.spacing_y_m, mm.lo - level0_.max_error_m);
-      const glm::dvec3 hi((o.x + kBlockQuads) * hf.spacing_x_m, (o.y + kBlockQuads) * hf.spacing_y_m, mm.hi);
-      if (frustum.intersects_box(lo - camera.position, hi - camera.position)) visible_blocks_.push_back(o);
-    }
-  // Front to back, so the depth test rejects hidden Level1 fragments before
-  // they are shaded (blocks behind a nearer ridge cost rasterisation only).
-  const glm::dvec2 eye(camera.position.x / hf.spacing_x_m, camera.position.y / hf.spacing_y_m);
-  std::sort(visible_blocks_.begin(), visible_blocks_.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-    const glm::dvec2 ca = glm::dvec2(a) + 0.5 * kBlockQuads - eye, cb = glm::dvec2(b) + 0.5 * kBlockQuads - eye;
-    return glm::dot(ca, ca) < glm::dot(cb, cb);
-  });
+  visible_blocks_ = lod::visible_level1_blocks(
+      hf, pyramid_, origin_, n, level0_.max_error_m,
+      [&](const glm::dvec3& lo, const glm::dvec3& hi) {
+        return frustum.intersects_box(lo - camera.position, hi - camera.position);
+      },
+      eye);
   const glm::ivec2 g0 = origin_ - band_w_, g1 = origin_ + (n - 1) + band_w_;
-  const auto mm = rect_minmax(pyramid_, g0.x, g0.y, g1.x, g1.y);
+  const auto mm = lod::rect_minmax(pyramid_, g0.x, g0.y, g1.x, g1.y);
   const glm::dvec3 band_lo =
       glm::dvec3(std::max(g0.x, 0) * hf.spacing_x_m, std::max(g0.y, 0) * hf.spacing_y_m, mm.lo) - camera.position;
   const glm::dvec3 band_hi = glm::dvec3(std::min(g1.x, hf.width - 1) * hf.spacing_x_m,

@@ -100,11 +100,7 @@ class TwoLevelMethod final : public TerrainMethod {
   double last_ratio_ = -1.0;
   bool eye_guarded_ = false;
   int n_ = 0;  // Level1 vertices a side used this frame  // this frame's Level1 size / centre came from the eye guard
-  // The guard acts while the eye is below this many times Level0's max error
-  // above the ground, and keeps the eye this many samples inside Level1.
-  static constexpr double kEyeGuardHeightFactor = 10.0;
-  static constexpr int kEyeGuardMarginSamples = 32;
-  void apply_eye_guard(const Camera& camera, int& n, int& ec_i, int& ec_j);
+  // (eye guard, band width, blocks: lod/level1_selection.h)
   bool terrain_visible_ = false, band_visible_ = false;
   glm::ivec4 band_rect_{0};  // the band's screen rectangle (x0, y0, x1, y1), from update()
   std::vector<glm::ivec2> visible_blocks_;
