@@ -15,14 +15,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using ig::io::AltitudeMode;
-using ig::io::PositionFrame;
-using ig::io::Scenario;
-using ig::io::ScenarioError;
-using ig::io::expand_env;
-using ig::io::load_scenario;
-using ig::io::parse_scenario;
-using ig::io::scenario_frame_count;
+using namespace ig::io;
 
 // Message of the ScenarioError that parsing `text` throws; fails the test
 // (and returns "") when it parses.
