@@ -56,7 +56,9 @@ double parse_double(const std::string& flag, const std::string& v) {
 void parse_command_line(CLI::App& app, const std::vector<std::string>& argv) {
   app.set_help_flag();
   app.allow_extras();
-  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  for (CLI::Option* option : app.get_options())  // given twice, the last value counts (repeatable ones keep all)
+    if (option->get_multi_option_policy() == CLI::MultiOptionPolicy::Throw)
+      option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   try {
     app.parse(std::vector<std::string>(argv.rbegin(), argv.rend()));
   } catch (const CLI::ParseError& e) {
