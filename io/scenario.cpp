@@ -613,10 +613,9 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
       require_object(l, "live");
       check_keys(l, "live", {"latency"});
       if (l.contains("latency")) {
-        const std::string m = get_string(l["latency"], "live.latency");
-        if (m != "smooth" && m != "latest" && m != "sync")
-          fail("live.latency", "must be \"smooth\", \"latest\" or \"sync\"" + got(l["latency"]));
-        s.live_latency = m;
+        const auto m = parse_latency_mode(get_string(l["latency"], "live.latency"));
+        if (!m) fail("live.latency", "must be \"smooth\", \"latest\" or \"sync\"" + got(l["latency"]));
+        s.live_latency = *m;
       }
     }
     return s;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/filter/pose_filter.h"
 #include "options/twolevel_options.h"
 
 namespace ig::io {
@@ -99,8 +100,9 @@ struct Scenario {
   double duration_s = 10.0;             // defaults to the last key's time when omitted
   std::vector<double> capture_times_s;  // captured as PNG (nearest frame)
   // Live IG (ig serve): how the pose filter trades latency for smoothness,
-  // "smooth", "latest" or "sync" (docs/pose-filter.md, "Latency modes").
-  std::string live_latency = "smooth";
+  // "smooth", "latest" or "sync" (docs/pose-filter.md, "Latency modes");
+  // ig serve --latency and Modbus override it.
+  LatencyMode live_latency = LatencyMode::Smooth;
 };
 
 // Parse JSON text / a file. Throws ScenarioError("<where>: <key path>: <reason>").

@@ -200,9 +200,9 @@ TEST(Scenario, Defaults) {
   EXPECT_DOUBLE_EQ(s.time_step_s, 1.0 / 60.0);
   EXPECT_DOUBLE_EQ(s.duration_s, 4.0);  // last key time
   EXPECT_TRUE(s.capture_times_s.empty());
-  EXPECT_EQ(s.live_latency, "smooth");
+  EXPECT_EQ(s.live_latency, LatencyMode::Smooth);
   EXPECT_EQ(scenario_frame_count(s), 241);
-  EXPECT_EQ(parse_scenario(doc(R"("live": {"latency": "latest"})")).live_latency, "latest");
+  EXPECT_EQ(parse_scenario(doc(R"("live": {"latency": "latest"})")).live_latency, LatencyMode::Latest);
 
   // Unnamed channels after the first get distinct names.
   const Scenario c = parse_scenario(doc(R"("channels": [{}, {"heading_offset_deg": 30}])"));

@@ -65,7 +65,8 @@ extern "C" void on_signal(int) { g_stop = true; }
 
 struct Args {
   std::string config;
-  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus, can, latency;
+  std::optional<std::string> udp, cigi, cigi_reply, fgfdm, multicast, channel, record, modbus, can;
+  std::optional<io::LatencyMode> latency;  // overrides the config's live.latency
   bool host_surface_drawn = false;
   int can_altitude = 322;
   std::optional<int> can_node;
@@ -90,7 +91,8 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_option("--multicast", args.multicast);
   app.add_option("--channel", args.channel);
   app.add_option("--record", args.record);
-  app.add_option("--latency", args.latency)->check(one_of({"smooth", "latest", "sync"}));
+  app.add_option_function<std::string>("--latency", [&](const std::string& v) { args.latency = io::parse_latency_mode(v); })
+      ->check(one_of({"smooth", "latest", "sync"}));
   app.add_option("--modbus", args.modbus);
   app.add_option("--host-surface", host_surface)->check(one_of({"full", "drawn"}));
   app.add_option("--can", args.can);
@@ -142,7 +144,7 @@ int run(const Args& args) {
   const std::string name = scenario.name + "_" + scenario.channels.front().name;
   const std::filesystem::path out = args.out_dir.empty() ? std::filesystem::path("out") / ("serve_" + name)
                                                          : std::filesystem::path(args.out_dir);
-  const io::LatencyMode latency = *io::parse_latency_mode(args.latency.value_or(scenario.live_latency));
+  const io::LatencyMode latency = args.latency.value_or(scenario.live_latency);
   if (latency == io::LatencyMode::Synchronous && !args.cigi)
     throw std::runtime_error("latency mode sync is CIGI synchronous operation: it needs --cigi");
 
