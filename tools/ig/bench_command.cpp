@@ -73,7 +73,7 @@ struct Args {
   std::vector<std::string> methods;
   bool sweep = false;
   std::optional<int> frames;
-  std::optional<int> width, height;
+  session::RunOptions run;  // --size (and the reference method, headless)
   std::optional<double> fov;
   int error_samples = 10;
   std::optional<double> match_px;
@@ -119,7 +119,7 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_option("--methods", methods);
   app.add_flag("--sweep", args.sweep);
   app.add_option("--frames", args.frames)->check(positive_int());
-  add_size_option(app, "--size", args.width, args.height);
+  add_size_option(app, "--size", args.run.width, args.run.height);
   app.add_option("--fov", args.fov)->check(positive_number());
   app.add_option("--error-samples", args.error_samples)->check(positive_int());
   app.add_option("--match-px", args.match_px)->check(positive_number());
@@ -129,7 +129,7 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_option("--out", args.out_dir);
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (args.width > 16384 || args.height > 16384) throw UsageError("--size: at most 16384x16384");
+  if (args.run.width > 16384 || args.run.height > 16384) throw UsageError("--size: at most 16384x16384");
   if (args.fov > 179.0) throw UsageError("--fov: must be in (0, 179] degrees");
   args.methods = methods ? split_methods(*methods) : render::method_names();
   args.command_line = command_line(a);
@@ -259,9 +259,7 @@ int run(const Args& args) {
     scenario.render.fov_y_deg = *args.fov;
     scenario.channels[0].fov_y_deg.reset();
   }
-  session::RunOptions run;
-  run.width = args.width;
-  run.height = args.height;
+  session::RunOptions run = args.run;
   run.method = "reference";
   run.headless = true;
   run.shader_dir = args.shader_dir.empty() ? gl::default_shader_dir() : args.shader_dir;
