@@ -173,14 +173,14 @@ std::array<double, 3> get_vec3(const json& j, const std::string& path) {
   return v;
 }
 
-std::array<float, 3> get_colour(const json& j, const std::string& path) {
+glm::vec3 get_colour(const json& j, const std::string& path) {
   if (!j.is_array() || j.size() != 3) {
     fail(path, std::string("must be an array of 3 numbers in [0, 1] (got ") +
                    (j.is_array() ? std::to_string(j.size()) + " elements" : std::string(j.type_name())) + ")");
   }
-  std::array<float, 3> c{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    c[i] = static_cast<float>(get_number_in(j[i], element(path, i), 0.0, 1.0));
+  glm::vec3 c{};
+  for (int i = 0; i < 3; ++i) {
+    c[i] = static_cast<float>(get_number_in(j[i], element(path, std::size_t(i)), 0.0, 1.0));
   }
   return c;
 }
@@ -341,10 +341,11 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   }
   if (j.contains("method")) r.method = get_nonempty_string(j["method"], child(path, "method"));
   if (j.contains("fog_visibility_m")) {
-    r.fog_visibility_m = get_number_in(j["fog_visibility_m"], child(path, "fog_visibility_m"), 0.0, kMaxDistanceM);
+    r.shading.fog_visibility_m = get_number_in(j["fog_visibility_m"], child(path, "fog_visibility_m"), 0.0, kMaxDistanceM);
   }
-  if (j.contains("sky_zenith_rgb")) r.sky_zenith_rgb = get_colour(j["sky_zenith_rgb"], child(path, "sky_zenith_rgb"));
-  if (j.contains("sky_horizon_rgb")) r.sky_horizon_rgb = get_colour(j["sky_horizon_rgb"], child(path, "sky_horizon_rgb"));
+  if (j.contains("sky_zenith_rgb")) r.shading.sky_zenith = get_colour(j["sky_zenith_rgb"], child(path, "sky_zenith_rgb"));
+  if (j.contains("sky_horizon_rgb"))
+    r.shading.sky_horizon = get_colour(j["sky_horizon_rgb"], child(path, "sky_horizon_rgb"));
   if (j.contains("sun_direction")) {
     const std::string p = child(path, "sun_direction");
     std::array<double, 3> v = get_vec3(j["sun_direction"], p);
@@ -353,7 +354,7 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
     // Scale first so squaring cannot overflow, then normalise.
     for (double& c : v) c /= m;
     const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (std::size_t i = 0; i < 3; ++i) r.sun_direction[i] = static_cast<float>(v[i] / len);
+    for (int i = 0; i < 3; ++i) r.shading.sun_direction[i] = static_cast<float>(v[i] / len);
   }
   if (j.contains("imagery")) r.imagery = get_file_path(j["imagery"], child(path, "imagery"), ctx);
   if (j.contains("frame_budget_ms")) r.frame_budget_ms = get_positive(j["frame_budget_ms"], child(path, "frame_budget_ms"), 1e6);
@@ -621,10 +622,9 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
       require_object(l, "live");
       check_keys(l, "live", {"latency"});
       if (l.contains("latency")) {
-        const std::string m = get_string(l["latency"], "live.latency");
-        if (m != "smooth" && m != "latest" && m != "sync")
-          fail("live.latency", "must be \"smooth\", \"latest\" or \"sync\"" + got(l["latency"]));
-        s.live_latency = m;
+        const auto m = parse_latency_mode(get_string(l["latency"], "live.latency"));
+        if (!m) fail("live.latency", "must be \"smooth\", \"latest\" or \"sync\"" + got(l["latency"]));
+        s.live_latency = *m;
       }
     }
     return s;

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "io/filter/pose_filter.h"
+#include "options/shading_options.h"
 #include "options/twolevel_options.h"
 
 namespace ig::io {
@@ -56,10 +58,8 @@ struct RenderSpec {
   double near_m = 0.5;
   double far_m = 300000.0;
   std::string method = "twolevel";
-  double fog_visibility_m = 60000.0;  // distance where fog reaches ~98 %; 0 = off
-  std::array<float, 3> sky_zenith_rgb{0.22f, 0.42f, 0.78f};
-  std::array<float, 3> sky_horizon_rgb{0.70f, 0.80f, 0.92f};
-  std::array<float, 3> sun_direction{-0.4f, 0.5f, 0.75f};  // towards the sun, local ENU
+  // fog_visibility_m, sky_zenith_rgb, sky_horizon_rgb, sun_direction
+  options::ShadingOptions shading;
   std::optional<std::string> imagery;  // optional RGB image draped over the DEM
   double frame_budget_ms = 16.667;     // frames slower than this are counted
   bool vsync = true;                   // windowed only
@@ -106,8 +106,9 @@ struct Scenario {
   double duration_s = 10.0;             // defaults to the last key's time when omitted
   std::vector<double> capture_times_s;  // captured as PNG (nearest frame)
   // Live IG (ig serve): how the pose filter trades latency for smoothness,
-  // "smooth", "latest" or "sync" (docs/pose-filter.md, "Latency modes").
-  std::string live_latency = "smooth";
+  // "smooth", "latest" or "sync" (docs/pose-filter.md, "Latency modes");
+  // ig serve --latency and Modbus override it.
+  LatencyMode live_latency = LatencyMode::Smooth;
 };
 
 // Parse JSON text / a file. Throws ScenarioError("<where>: <key path>: <reason>").

@@ -14,7 +14,6 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
-glm::vec3 to_vec3(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
 }  // namespace
 
 ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
@@ -47,12 +46,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   co.title = "ig - " + scenario_.name;
   context_ = gl::create_context(co);
 
-  render::ShadingParams shading;
-  shading.sun_direction = to_vec3(r.sun_direction);
-  shading.sky_zenith = to_vec3(r.sky_zenith_rgb);
-  shading.sky_horizon = to_vec3(r.sky_horizon_rgb);
-  shading.fog_visibility_m = r.fog_visibility_m;
-  scene_ = std::make_unique<render::TerrainScene>(heightfield_, shading, r.imagery, scenario_.terrain.texture_limit);
+  scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit);
   scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
   scene_->enable_height_window(scenario_.terrain.height_window);
 

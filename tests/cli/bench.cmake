@@ -25,22 +25,12 @@ add_test(NAME cli.bench.sweep
     python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_sweep' --rows $rows --frames 6 --samples 6 --methods twolevel,reference")
 set_tests_properties(cli.bench.sweep PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok")
 
-add_test(NAME cli.bench.unknown_method
-  COMMAND bash -c "'$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,nope --out '${IG_TEST_OUT}/bench_nope' 2>&1; echo exit=$?")
-set_tests_properties(cli.bench.unknown_method PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "unknown method 'nope' \\(available: .*exit=2")
-
-add_test(NAME cli.bench.bad_size
-  COMMAND bash -c "'$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --size 640by480 --out '${IG_TEST_OUT}/bench_badsize' 2>&1; echo exit=$?")
-set_tests_properties(cli.bench.bad_size PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "--size: expected WxH, got '640by480'.*exit=2")
-
-add_test(NAME cli.bench.bad_fov
-  COMMAND bash -c "'$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --fov 200 --out '${IG_TEST_OUT}/bench_badfov' 2>&1; echo exit=$?")
-set_tests_properties(cli.bench.bad_fov PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "--fov: must be in \\(0, 179\\] degrees.*exit=2")
-
-add_test(NAME cli.bench.missing_scenario
-  COMMAND bash -c "'$<TARGET_FILE:ig>' bench /nonexistent/scn.json --out '${IG_TEST_OUT}/bench_missing' 2>&1; echo exit=$?")
-set_tests_properties(cli.bench.missing_scenario PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "/nonexistent/scn.json.*exit=1")
+set(_bench "'$<TARGET_FILE:ig>' bench")
+ig_cli_failure_test(cli.bench.unknown_method "unknown method 'nope' \\(available: .*exit=2"
+  "${_bench} '${IG_BENCH_TINY}' --methods twolevel,nope --out '${IG_TEST_OUT}/bench_nope'")
+ig_cli_failure_test(cli.bench.bad_size "--size: expected WxH, got '640by480'.*exit=2"
+  "${_bench} '${IG_BENCH_TINY}' --size 640by480 --out '${IG_TEST_OUT}/bench_badsize'")
+ig_cli_failure_test(cli.bench.bad_fov "--fov: must be in \\(0, 179\\] degrees.*exit=2"
+  "${_bench} '${IG_BENCH_TINY}' --fov 200 --out '${IG_TEST_OUT}/bench_badfov'")
+ig_cli_failure_test(cli.bench.missing_scenario "/nonexistent/scn.json.*exit=1"
+  "${_bench} /nonexistent/scn.json --out '${IG_TEST_OUT}/bench_missing'")

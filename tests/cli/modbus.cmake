@@ -14,10 +14,9 @@ if(IG_WITH_MODBUS)
     PASS_REGULAR_EXPRESSION "mbpoll frame counter: [0-9]+ then [0-9]+.*Illegal data value.*Illegal data address.*capture trigger -> capture_.*freeze=1: ig_state 3.*polling ok.*Level1 shrank after the threshold write; the IG kept rendering")
 
   # Bad --modbus endpoints are usage errors.
-  add_test(NAME cli.modbus.bad_endpoint
-    COMMAND bash -c "'$<TARGET_FILE:ig>' serve --udp 127.0.0.1:47320 --modbus 127.0.0.1 --frames 1 2>&1; test $? -eq 2 && echo exit-2")
-  set_tests_properties(cli.modbus.bad_endpoint PROPERTIES LABELS "cli;modbus"
-    PASS_REGULAR_EXPRESSION "--modbus.*expected ADDR:PORT.*exit-2")
+  ig_cli_failure_test(cli.modbus.bad_endpoint "--modbus.*expected ADDR:PORT.*exit=2"
+    "'$<TARGET_FILE:ig>' serve --udp 127.0.0.1:47320 --modbus 127.0.0.1 --frames 1")
+  set_tests_properties(cli.modbus.bad_endpoint PROPERTIES LABELS "cli;modbus")
   # A port already taken: one line, exit 1.
   add_test(NAME cli.modbus.port_in_use COMMAND bash -c "
     '$<TARGET_FILE:ig>' serve --headless --udp 127.0.0.1:47321 --modbus 127.0.0.1:47322 --seconds 4 --size 64x48 --quiet --out ${IG_MODBUS_OUT}/inuse1 >/dev/null 2>&1 &

@@ -22,15 +22,10 @@ add_test(NAME cli.run.window_under_xvfb
     echo window ok")
 set_tests_properties(cli.run.window_under_xvfb PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "window ok")
 
-add_test(NAME cli.run.missing_scenario
-  COMMAND bash -c "'$<TARGET_FILE:ig>' run /nonexistent/scn.json 2>&1; test $? -ne 0 && echo exit-nonzero")
-set_tests_properties(cli.run.missing_scenario PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "/nonexistent/scn.json.*exit-nonzero")
-
-add_test(NAME cli.run.unknown_method
-  COMMAND bash -c "'$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --method nope --frames 1 --out '${IG_TEST_OUT}/run_nope' 2>&1; test $? -ne 0 && echo exit-nonzero")
-set_tests_properties(cli.run.unknown_method PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "unknown method 'nope'.*exit-nonzero")
+ig_cli_failure_test(cli.run.missing_scenario "/nonexistent/scn.json.*exit=[1-9]"
+  "'$<TARGET_FILE:ig>' run /nonexistent/scn.json")
+ig_cli_failure_test(cli.run.unknown_method "unknown method 'nope'.*exit=[1-9]"
+  "'$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --method nope --frames 1 --out '${IG_TEST_OUT}/run_nope'")
 
 # The Sierra Nevada flight on the real 4097^2 DEM (skips without IG_DEM_DIR).
 add_test(NAME cli.run.sierra_real_dem

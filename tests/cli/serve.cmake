@@ -93,9 +93,6 @@ add_test(NAME cli.serve.multicast_three_channels COMMAND bash
 set_tests_properties(cli.serve.multicast_three_channels PROPERTIES LABELS "cli;net"
   PASS_REGULAR_EXPRESSION "all 3 channels follow the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
 
-add_test(NAME cli.serve.no_source
-  COMMAND bash -c "'$<TARGET_FILE:ig>' serve --frames 1 2>&1; test $? -eq 2 && echo exit-2")
-set_tests_properties(cli.serve.no_source PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "no pose source.*exit-2")
-add_test(NAME cli.serve.bad_endpoint
-  COMMAND bash -c "'$<TARGET_FILE:ig>' serve --udp 127.0.0.1:99999 --frames 1 2>&1; test $? -ne 0 && echo exit-nonzero")
-set_tests_properties(cli.serve.bad_endpoint PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "port must be 0..65535.*exit-nonzero")
+ig_cli_failure_test(cli.serve.no_source "no pose source.*exit=2" "'$<TARGET_FILE:ig>' serve --frames 1")
+ig_cli_failure_test(cli.serve.bad_endpoint "port must be 0..65535.*exit=[1-9]"
+  "'$<TARGET_FILE:ig>' serve --udp 127.0.0.1:99999 --frames 1")

@@ -21,18 +21,13 @@ class CdlodTest : public lod_views::ReferenceFramesTest {};
 TEST_F(CdlodTest, NoHolesAgainstTheReference) {
   // A short finest range, so every view mixes several LODs and morph zones.
   CdlodMethod method(*world_->scene, world_->shader_dir, 32.0);
-  const auto views = lod_views::views(world_->hf);
-  for (size_t k = 0; k < views.size(); ++k) {
-    const Frame f = lod_views::render(*world_, method, views[k].camera);
-    lod_views::dump(f, "cdlod_" + views[k].name);
-    const auto c = lod_views::expect_no_holes((*reference_)[k], f, views[k].name);
-    std::printf("cdlod %-8s triangles %lld  bound %.2f px  lods %.0f..%.0f  terrain %lld checked %lld holes %lld %s\n",
-                views[k].name.c_str(), f.stats.triangles, f.bound_px, f.stats.columns[2].second,
-                f.stats.columns[3].second, c.reference_terrain, c.checked, c.holes, c.where.c_str());
-    if (views[k].name != "down") {
-      EXPECT_GT(f.stats.columns[3].second, f.stats.columns[2].second) << "several LODs";
-    }
-  }
+  lod_views::expect_every_view_without_holes(
+      *world_, *reference_, method, "cdlod", [](const std::string& view, const Frame& f) {
+        std::printf("cdlod %-8s lods %.0f..%.0f\n", view.c_str(), f.stats.columns[2].second, f.stats.columns[3].second);
+        if (view != "down") {
+          EXPECT_GT(f.stats.columns[3].second, f.stats.columns[2].second) << "several LODs";
+        }
+      });
 }
 
 // Each piece's LOD respects the ranges: every point drawn at LOD k lies

@@ -19,15 +19,10 @@ class GeoMipMapTest : public lod_views::ReferenceFramesTest {};
 
 TEST_F(GeoMipMapTest, NoHolesAgainstTheReference) {
   GeoMipMapMethod method(*world_->scene, world_->shader_dir, 1.0);
-  const auto views = lod_views::views(world_->hf);
-  for (size_t k = 0; k < views.size(); ++k) {
-    const Frame f = lod_views::render(*world_, method, views[k].camera);
-    lod_views::dump(f, "geomipmap_" + views[k].name);
-    const auto c = lod_views::expect_no_holes((*reference_)[k], f, views[k].name);
-    std::printf("geomipmap %-8s triangles %lld  bound %.2f px  terrain %lld checked %lld holes %lld\n",
-                views[k].name.c_str(), f.stats.triangles, f.bound_px, c.reference_terrain, c.checked, c.holes);
-    EXPECT_EQ(f.stats.passes, "terrain+sky");
-  }
+  lod_views::expect_every_view_without_holes(*world_, *reference_, method, "geomipmap",
+                                             [](const std::string&, const Frame& f) {
+                                               EXPECT_EQ(f.stats.passes, "terrain+sky");
+                                             });
 }
 
 // CPU side of the crack check on the live selection: every pair of drawn

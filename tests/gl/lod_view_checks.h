@@ -298,6 +298,24 @@ inline HoleCount expect_no_holes(const Frame& reference, const Frame& f, const s
   return c;
 }
 
+// Every view of views(world.hf) rendered with `method`, dumped as
+// "NAME_VIEW", and expect_no_holes against its reference frame; `each(view
+// name, frame)` adds the method's own checks of the frame.
+template <class Each>
+void expect_every_view_without_holes(World& world, const std::vector<Frame>& reference,
+                                     ig::render::TerrainMethod& method, const std::string& name, Each each) {
+  const auto all = views(world.hf);
+  for (size_t k = 0; k < all.size(); ++k) {
+    const Frame f = render(world, method, all[k].camera);
+    dump(f, name + "_" + all[k].name);
+    const auto c = expect_no_holes(reference[k], f, all[k].name);
+    std::printf("%s %-8s triangles %lld  bound %.2f px  terrain %lld checked %lld holes %lld %s\n", name.c_str(),
+                all[k].name.c_str(), f.stats.triangles, f.bound_px, c.reference_terrain, c.checked, c.holes,
+                c.where.c_str());
+    each(all[k].name, f);
+  }
+}
+
 // Follows a knob sweep from least to most accurate at one view: triangles
 // never fewer and the claimed bound finite, >= 0 and never larger at each
 // step; over the sweep more than twice the triangles and a smaller bound.
@@ -350,6 +368,23 @@ inline void expect_registered_with_knob(const World& world, const std::string& n
       EXPECT_LT(sweep[k], sweep[k - 1]) << "least to most accurate";
     }
   }
+}
+
+// `name` registered with its default knob `knob_name` = `default_value` and
+// `columns` log columns; make_method refuses `bad_knob` and NaN.
+inline void expect_registered_with_default_knob(const World& world, const std::string& name,
+                                                const std::string& knob_name, double default_value, size_t columns,
+                                                double bad_knob) {
+  const auto names = ig::render::method_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), name), names.end());
+  auto m = ig::render::make_method(name, *world.scene, world.shader_dir, {});
+  EXPECT_EQ(m->name(), name);
+  ASSERT_TRUE(m->knob().has_value());
+  EXPECT_EQ(m->knob()->name, knob_name);
+  EXPECT_EQ(m->knob()->value, default_value);
+  EXPECT_EQ(m->column_names().size(), columns);
+  EXPECT_THROW(ig::render::make_method(name, *world.scene, world.shader_dir, {}, bad_knob), std::invalid_argument);
+  EXPECT_THROW(ig::render::make_method(name, *world.scene, world.shader_dir, {}, std::nan("")), std::invalid_argument);
 }
 
 // DEMs of odd sizes (not 2^n + 1, non-square, tiny) rendered with the method

@@ -79,7 +79,7 @@ Scenario scenario() {
   s.render.width = kW;
   s.render.height = kH;
   s.render.fov_y_deg = 45.0;
-  s.render.fog_visibility_m = 30000.0;
+  s.render.shading.fog_visibility_m = 30000.0;
   s.channels = {ig::io::ChannelSpec{}};
   s.path.frame = ig::io::PositionFrame::Local;
   s.path.altitude = ig::io::AltitudeMode::AboveGround;

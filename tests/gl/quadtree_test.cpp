@@ -57,16 +57,7 @@ TEST(Quadtree, C1SweepGivesMoreTrianglesAndASmallerBound) {
 }
 
 TEST(Quadtree, RegisteredWithItsKnob) {
-  auto& w = world();
-  const auto names = ig::render::method_names();
-  EXPECT_NE(std::find(names.begin(), names.end(), "quadtree"), names.end());
-  auto m = ig::render::make_method("quadtree", *w.scene, w.shader_dir, {});
-  EXPECT_EQ(m->name(), "quadtree");
-  EXPECT_EQ(m->knob()->name, "C1");
-  EXPECT_EQ(m->knob()->value, ig::render::QuadtreeOptions{}.c1);
-  EXPECT_EQ(m->column_names().size(), 5u);
-  EXPECT_THROW(ig::render::make_method("quadtree", *w.scene, w.shader_dir, {}, 0.0), std::invalid_argument);
-  EXPECT_THROW(ig::render::make_method("quadtree", *w.scene, w.shader_dir, {}, std::nan("")), std::invalid_argument);
+  lod_views::expect_registered_with_default_knob(world(), "quadtree", "C1", ig::render::QuadtreeOptions{}.c1, 5, 0.0);
 }
 
 }  // namespace

@@ -45,16 +45,7 @@ TEST(Roam, KnobSweepGivesMoreTrianglesAndASmallerBound) {
 }
 
 TEST(Roam, RegisteredWithItsKnob) {
-  auto& w = world();
-  const auto names = ig::render::method_names();
-  EXPECT_NE(std::find(names.begin(), names.end(), "roam"), names.end());
-  auto m = ig::render::make_method("roam", *w.scene, w.shader_dir, {});
-  EXPECT_EQ(m->name(), "roam");
-  EXPECT_EQ(m->knob()->name, "tau_px");
-  EXPECT_EQ(m->knob()->value, ig::render::RoamOptions{}.tau_px);
-  EXPECT_EQ(m->column_names().size(), 4u);
-  EXPECT_THROW(ig::render::make_method("roam", *w.scene, w.shader_dir, {}, -1.0), std::invalid_argument);
-  EXPECT_THROW(ig::render::make_method("roam", *w.scene, w.shader_dir, {}, std::nan("")), std::invalid_argument);
+  lod_views::expect_registered_with_default_knob(world(), "roam", "tau_px", ig::render::RoamOptions{}.tau_px, 4, -1.0);
 }
 
 }  // namespace

@@ -34,11 +34,8 @@
 
 namespace {
 
-using ig::session::RunOptions;
-using ig::session::ScenarioRunner;
-using ig::io::AltitudeMode;
-using ig::io::PathKey;
-using ig::io::Scenario;
+using namespace ig::io;
+using namespace ig::session;
 
 ig::io::Scenario default_scenario() {
   return ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json");
@@ -333,7 +330,9 @@ TEST(TwoLevel, ControllerSettlesOnASteadyView) {
       sizes.push_back(tl.level1_size());
       ratios.push_back(tl.last_ratio());
     }
-    if (!predict) EXPECT_EQ(sizes.front(), ladder.back()) << "the paper's rule starts at the largest size";
+    if (!predict) {
+      EXPECT_EQ(sizes.front(), ladder.back()) << "the paper's rule starts at the largest size";
+    }
     int changes_after = 0;
     for (int k = kSettleBy + 1; k < kFrames; ++k) changes_after += sizes[k] != sizes[k - 1];
     const double r = ratios.back();

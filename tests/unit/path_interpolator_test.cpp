@@ -8,11 +8,7 @@
 
 namespace {
 
-using ig::io::Hpr;
-using ig::io::PathInterpolator;
-using ig::io::PathKey;
-using ig::io::PathSpec;
-using ig::io::Pose;
+using namespace ig::io;
 
 PathKey key(double t, double x, double y, double z, double h = 0, double p = 0, double r = 0) {
   PathKey k;

@@ -22,11 +22,7 @@
 
 namespace {
 
-using ig::io::FilteredPose;
-using ig::io::PoseFilter;
-using ig::io::PoseFilterOptions;
-using ig::io::PoseSample;
-using ig::io::attitude_from_hpr;
+using namespace ig::io;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kG = 9.80665;

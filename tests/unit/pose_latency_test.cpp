@@ -14,11 +14,7 @@
 #include "io/pose.h"
 
 namespace {
-using ig::io::FilteredPose;
-using ig::io::LatencyMode;
-using ig::io::PoseFilter;
-using ig::io::PoseFilterOptions;
-using ig::io::PoseSample;
+using namespace ig::io;
 
 constexpr double kSpeed = 60.0;  // m/s, along a 1 km radius turn
 
@@ -139,7 +135,9 @@ TEST(PoseLatency, ModesTradeDelayForExtrapolation) {
       const double display_sender_time = now + lead - delay - 50.0;
       lag[int(m)] += display_sender_time - p->sample_time_s;
       err[int(m)] += glm::length(p->position - truth(display_sender_time));
-      if (m == LatencyMode::Synchronous) EXPECT_EQ(p->position, s.position);
+      if (m == LatencyMode::Synchronous) {
+        EXPECT_EQ(p->position, s.position);
+      }
       ++n;
     }
     lag[int(m)] /= n;

@@ -6,13 +6,7 @@
 
 namespace {
 
-using ig::io::Hpr;
-using ig::io::apply_view_offset;
-using ig::io::attitude_from_hpr;
-using ig::io::forward_of;
-using ig::io::hpr_from_attitude;
-using ig::io::right_of;
-using ig::io::up_of;
+using namespace ig::io;
 
 constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }

@@ -21,11 +21,7 @@
 
 namespace {
 
-using ig::terrain::cast_ray;
-using ig::terrain::cast_ray_dda;
-using ig::terrain::Heightfield;
-using ig::terrain::HeightPyramid;
-using ig::terrain::RayHit;
+using namespace ig::terrain;
 using glm::dvec3;
 using LD = long double;
 

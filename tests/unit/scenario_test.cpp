@@ -15,14 +15,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using ig::io::AltitudeMode;
-using ig::io::PositionFrame;
-using ig::io::Scenario;
-using ig::io::ScenarioError;
-using ig::io::expand_env;
-using ig::io::load_scenario;
-using ig::io::parse_scenario;
-using ig::io::scenario_frame_count;
+using namespace ig::io;
 
 // Message of the ScenarioError that parsing `text` throws; fails the test
 // (and returns "") when it parses.
@@ -107,17 +100,17 @@ TEST(Scenario, FullDocumentEveryField) {
   EXPECT_DOUBLE_EQ(s.render.near_m, 1.5);
   EXPECT_DOUBLE_EQ(s.render.far_m, 200000.0);
   EXPECT_EQ(s.render.method, "tessellated");
-  EXPECT_DOUBLE_EQ(s.render.fog_visibility_m, 40000.0);
-  EXPECT_FLOAT_EQ(s.render.sky_zenith_rgb[0], 0.1f);
-  EXPECT_FLOAT_EQ(s.render.sky_zenith_rgb[1], 0.2f);
-  EXPECT_FLOAT_EQ(s.render.sky_zenith_rgb[2], 0.3f);
-  EXPECT_FLOAT_EQ(s.render.sky_horizon_rgb[0], 0.4f);
-  EXPECT_FLOAT_EQ(s.render.sky_horizon_rgb[1], 0.5f);
-  EXPECT_FLOAT_EQ(s.render.sky_horizon_rgb[2], 0.6f);
+  EXPECT_DOUBLE_EQ(s.render.shading.fog_visibility_m, 40000.0);
+  EXPECT_FLOAT_EQ(s.render.shading.sky_zenith[0], 0.1f);
+  EXPECT_FLOAT_EQ(s.render.shading.sky_zenith[1], 0.2f);
+  EXPECT_FLOAT_EQ(s.render.shading.sky_zenith[2], 0.3f);
+  EXPECT_FLOAT_EQ(s.render.shading.sky_horizon[0], 0.4f);
+  EXPECT_FLOAT_EQ(s.render.shading.sky_horizon[1], 0.5f);
+  EXPECT_FLOAT_EQ(s.render.shading.sky_horizon[2], 0.6f);
   // Normalised.
-  EXPECT_FLOAT_EQ(s.render.sun_direction[0], 0.0f);
-  EXPECT_FLOAT_EQ(s.render.sun_direction[1], 0.6f);
-  EXPECT_FLOAT_EQ(s.render.sun_direction[2], 0.8f);
+  EXPECT_FLOAT_EQ(s.render.shading.sun_direction[0], 0.0f);
+  EXPECT_FLOAT_EQ(s.render.shading.sun_direction[1], 0.6f);
+  EXPECT_FLOAT_EQ(s.render.shading.sun_direction[2], 0.8f);
   ASSERT_TRUE(s.render.imagery.has_value());
   EXPECT_EQ(*s.render.imagery, "/data/ortho.png");
   EXPECT_DOUBLE_EQ(s.render.frame_budget_ms, 8.333);
@@ -189,10 +182,10 @@ TEST(Scenario, Defaults) {
   EXPECT_EQ(s.render.near_m, r0.near_m);
   EXPECT_EQ(s.render.far_m, r0.far_m);
   EXPECT_EQ(s.render.method, r0.method);
-  EXPECT_EQ(s.render.fog_visibility_m, r0.fog_visibility_m);
-  EXPECT_EQ(s.render.sky_zenith_rgb, r0.sky_zenith_rgb);
-  EXPECT_EQ(s.render.sky_horizon_rgb, r0.sky_horizon_rgb);
-  EXPECT_EQ(s.render.sun_direction, r0.sun_direction);
+  EXPECT_EQ(s.render.shading.fog_visibility_m, r0.shading.fog_visibility_m);
+  EXPECT_EQ(s.render.shading.sky_zenith, r0.shading.sky_zenith);
+  EXPECT_EQ(s.render.shading.sky_horizon, r0.shading.sky_horizon);
+  EXPECT_EQ(s.render.shading.sun_direction, r0.shading.sun_direction);
   EXPECT_FALSE(s.render.imagery.has_value());
   EXPECT_EQ(s.render.frame_budget_ms, r0.frame_budget_ms);
   EXPECT_EQ(s.render.vsync, r0.vsync);
@@ -207,9 +200,9 @@ TEST(Scenario, Defaults) {
   EXPECT_DOUBLE_EQ(s.time_step_s, 1.0 / 60.0);
   EXPECT_DOUBLE_EQ(s.duration_s, 4.0);  // last key time
   EXPECT_TRUE(s.capture_times_s.empty());
-  EXPECT_EQ(s.live_latency, "smooth");
+  EXPECT_EQ(s.live_latency, LatencyMode::Smooth);
   EXPECT_EQ(scenario_frame_count(s), 241);
-  EXPECT_EQ(parse_scenario(doc(R"("live": {"latency": "latest"})")).live_latency, "latest");
+  EXPECT_EQ(parse_scenario(doc(R"("live": {"latency": "latest"})")).live_latency, LatencyMode::Latest);
 
   // Unnamed channels after the first get distinct names.
   const Scenario c = parse_scenario(doc(R"("channels": [{}, {"heading_offset_deg": 30}])"));

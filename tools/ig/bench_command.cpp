@@ -73,13 +73,14 @@ struct Args {
   std::vector<std::string> methods;
   bool sweep = false;
   std::optional<int> frames;
-  std::optional<int> width, height;
+  session::RunOptions run;  // --size (and the reference method, headless)
   std::optional<double> fov;
   int error_samples = 10;
   std::optional<double> match_px;
   std::vector<std::string> skip_passes;  // --skip-pass (twolevel cost breakdown)
   std::string shader_dir;
   std::string out_dir;
+  std::string command_line;  // as typed, for the report
 };
 
 std::vector<std::string> split_methods(const std::string& list) {
@@ -104,6 +105,12 @@ std::vector<std::string> split_methods(const std::string& list) {
   return out;
 }
 
+std::string command_line(const std::vector<std::string>& argv) {
+  std::string s = "ig bench";
+  for (const auto& a : argv) s += " " + (a.find_first_of(" \t'\"") == std::string::npos ? a : "'" + a + "'");
+  return s;
+}
+
 Args parse_args(const std::vector<std::string>& a) {
   Args args;
   CLI::App app("ig bench");
@@ -112,7 +119,7 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_option("--methods", methods);
   app.add_flag("--sweep", args.sweep);
   app.add_option("--frames", args.frames)->check(positive_int());
-  add_size_option(app, "--size", args.width, args.height);
+  add_size_option(app, "--size", args.run.width, args.run.height);
   app.add_option("--fov", args.fov)->check(positive_number());
   app.add_option("--error-samples", args.error_samples)->check(positive_int());
   app.add_option("--match-px", args.match_px)->check(positive_number());
@@ -122,9 +129,10 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_option("--out", args.out_dir);
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
-  if (args.width > 16384 || args.height > 16384) throw UsageError("--size: at most 16384x16384");
+  if (args.run.width > 16384 || args.run.height > 16384) throw UsageError("--size: at most 16384x16384");
   if (args.fov > 179.0) throw UsageError("--fov: must be in (0, 179] degrees");
   args.methods = methods ? split_methods(*methods) : render::method_names();
+  args.command_line = command_line(a);
   return args;
 }
 
@@ -202,12 +210,6 @@ std::string host_name() {
   return buf;
 }
 
-std::string command_line(const std::vector<std::string>& argv) {
-  std::string s = "ig bench";
-  for (const auto& a : argv) s += " " + (a.find_first_of(" \t'\"") == std::string::npos ? a : "'" + a + "'");
-  return s;
-}
-
 // Progress on stderr: a bar redrawn in place on a terminal, one line per
 // method and knob otherwise (logs stay readable).
 class Progress {
@@ -243,234 +245,229 @@ std::string label_of(const Variant& v, const render::TerrainMethod& m) {
   return v.method + " " + k->name + "=" + buf;
 }
 
+// ig bench with its parsed arguments: the exit status.
+int run(const Args& args) {
+  const auto start = Clock::now();
+  io::Scenario scenario = io::load_scenario(args.scenario);
+  namespace fs = std::filesystem;
+  const fs::path out = args.out_dir.empty() ? fs::path("out") / (scenario.name + "_bench") : fs::path(args.out_dir);
+  fs::create_directories(out);
+
+  // The first channel only; --fov replaces the scenario's (and that channel's own) field of view.
+  scenario.channels.resize(1);
+  if (args.fov) {
+    scenario.render.fov_y_deg = *args.fov;
+    scenario.channels[0].fov_y_deg.reset();
+  }
+  session::RunOptions run = args.run;
+  run.method = "reference";
+  run.headless = true;
+  run.shader_dir = args.shader_dir.empty() ? gl::default_shader_dir() : args.shader_dir;
+  session::ScenarioRunner runner(std::move(scenario), run);
+  const auto& s = runner.scenario();
+  const auto& hf = runner.heightfield();
+  const int width = s.render.width, height = s.render.height;
+  render::TwoLevelOptions tl_options = s.render.twolevel;
+  tl_options.skip_passes = args.skip_passes;
+
+  const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
+  const std::vector<int> sample_pos = sample_positions(int(frames.size()), args.error_samples);
+  std::vector<Variant> variants;
+  for (const auto& m : args.methods)
+    for (auto& v : variants_for(m, args.sweep, runner.scene(), run.shader_dir, tl_options)) variants.push_back(v);
+
+  Progress progress(isatty(STDERR_FILENO) != 0,
+                    (long long)sample_pos.size() + (long long)variants.size() * (long long)frames.size());
+
+  // Reference frames for the sampled frames, rendered once and kept.
+  auto& ref_channel = runner.channels().front();
+  std::map<int, stats::FrameImage> reference;  // by position in `frames`
+  std::map<int, render::Camera> reference_camera;
+  {
+    const auto t0 = Clock::now();
+    for (int p : sample_pos) {
+      runner.render_frame(frames[p]);
+      reference[p] = stats::read_frame_image(*ref_channel.target);
+      reference_camera[p] = ref_channel.camera;
+      progress.step("reference images", int(reference.size()), int(sample_pos.size()));
+    }
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%zu reference frames at %dx%d in %.1f s", sample_pos.size(), width, height,
+                  ms_since(t0) / 1000.0);
+    progress.line(buf);
+  }
+
+  auto camera_at = [&](int frame) {
+    return runner.camera_for(runner.pose_at(frame * s.time_step_s), ref_channel);
+  };
+  gl::RenderTarget target(width, height);
+  stats::FrameLog frames_csv((out / "frames.csv").string());
+  stats::FrameLog samples_csv((out / "samples.csv").string());
+  std::vector<BenchRow> rows;
+  for (const Variant& v : variants) {
+    const auto t_variant = Clock::now();
+    BenchRow row;
+    row.method = v.method;
+    const auto t0 = Clock::now();
+    auto method = render::make_method(v.method, runner.scene(), run.shader_dir, tl_options, v.knob);
+    row.build_ms = ms_since(t0);
+    row.knob = method->knob();
+    row.default_knob = v.is_default;
+    render::FrameRenderer renderer(runner.scene(), *method, run.shader_dir);
+    const std::string label = label_of(v, *method);
+    const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
+
+    renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
+    std::vector<double> frame_ms, cpu_ms, lod_ms, triangles, bounds, depth_p95, vs, fs, prims, draws, uploads;
+    double horizon_sum = 0.0, sq_sum = 0.0, samples_px = 0.0, holes = 0.0, interior_holes = 0.0, enclosed_holes = 0.0,
+           ref_px = 0.0;
+    size_t next_sample = 0;
+    for (int i = 0; i < int(frames.size()); ++i) {
+      const render::Camera camera = camera_at(frames[i]);
+      const auto tf = Clock::now();
+      const double cpu0 = process_cpu_ms();
+      const render::ViewResult vr = renderer.render(camera, target);
+      const double cpu = process_cpu_ms() - cpu0;
+      const double ms = ms_since(tf);
+      frame_ms.push_back(ms);
+      cpu_ms.push_back(cpu);
+      lod_ms.push_back(vr.timings.lod_ms);
+      triangles.push_back(double(vr.method.triangles));
+      vs.push_back(double(vr.total.vs_invocations));
+      fs.push_back(double(vr.total.fs_invocations));
+      prims.push_back(double(vr.total.primitives));
+      draws.push_back(double(vr.total.draw_calls));
+      uploads.push_back(double(vr.total.bytes_uploaded));
+      std::vector<stats::Cell> frame_row = {{"method", v.method},
+                                            knob_cell,
+                                            {"frame", frames[i]},
+                                            {"frame_ms", ms},
+                                            {"cpu_ms", cpu},
+                                            {"lod_ms", vr.timings.lod_ms},
+                                            {"terrain_ms", vr.timings.terrain_ms},
+                                            {"sky_ms", vr.timings.sky_ms},
+                                            {"triangles", vr.method.triangles}};
+      session::append_work_columns(frame_row, vr, /*per_pass=*/false);
+      frames_csv.add_row(frame_row);
+      if (next_sample < sample_pos.size() && sample_pos[next_sample] == i) {
+        ++next_sample;
+        if (reference_camera[i].position != camera.position)
+          throw std::logic_error("reference and method cameras differ at frame " + std::to_string(frames[i]));
+        const stats::FrameImage img = stats::read_frame_image(target);
+        const stats::ImageError e = stats::image_error(img, reference[i], camera);
+        const auto bound = method->error_bound_px(camera, height);
+        horizon_sum += e.horizon_mean_px;
+        row.horizon_max_px = std::max(row.horizon_max_px, e.horizon_max_px);
+        depth_p95.push_back(e.depth_rel_p95);
+        row.depth_rel_max = std::max(row.depth_rel_max, e.depth_rel_max);
+        sq_sum += e.mse * 3.0 * width * height;
+        samples_px += 3.0 * width * height;
+        holes += double(e.holes);
+        interior_holes += double(e.interior_holes);
+        enclosed_holes += double(e.enclosed_holes);
+        ref_px += double(e.reference_terrain_pixels);
+        if (bound) bounds.push_back(*bound);
+        samples_csv.add_row({{"method", v.method},
+                             knob_cell,
+                             {"frame", frames[i]},
+                             {"frame_ms", ms},
+                             {"horizon_mean_px", e.horizon_mean_px},
+                             {"horizon_max_px", e.horizon_max_px},
+                             {"horizon_columns", e.horizon_columns},
+                             {"depth_rel_p95", g6(e.depth_rel_p95)},
+                             {"depth_rel_max", g6(e.depth_rel_max)},
+                             {"psnr_db", e.psnr_db},
+                             {"holes", e.holes},
+                             {"interior_holes", e.interior_holes},
+                             {"enclosed_holes", e.enclosed_holes},
+                             {"reference_terrain_px", e.reference_terrain_pixels},
+                             bound ? stats::Cell("bound_px", *bound) : stats::Cell("bound_px", std::string())});
+      }
+      progress.step(label, i + 1, int(frames.size()));
+    }
+    const int n = int(sample_pos.size());
+    row.frames = int(frames.size());
+    row.frame_ms_median = stats::percentiles(frame_ms).median;
+    row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
+    row.lod_ms_median = stats::percentiles(lod_ms).median;
+    row.cpu_ms_median = stats::percentiles(cpu_ms).median;
+    row.triangles_median = stats::percentiles(triangles).median;
+    row.vs_invocations_median = stats::percentiles(vs).median;
+    row.fs_invocations_median = stats::percentiles(fs).median;
+    row.primitives_median = stats::percentiles(prims).median;
+    row.draw_calls_median = stats::percentiles(draws).median;
+    row.upload_bytes_median = stats::percentiles(uploads).median;
+    row.error_samples = n;
+    row.horizon_mean_px = n ? horizon_sum / n : 0.0;
+    row.depth_rel_p95 = stats::percentiles(depth_p95).median;
+    row.psnr_db = stats::psnr_db_from_mse(samples_px > 0 ? sq_sum / samples_px : 0.0, samples_px);
+    row.holes_mean = n ? holes / n : 0.0;
+    row.interior_holes_mean = n ? interior_holes / n : 0.0;
+    row.enclosed_holes_mean = n ? enclosed_holes / n : 0.0;
+    row.hole_fraction = ref_px > 0 ? holes / ref_px : 0.0;
+    if (!bounds.empty() && int(bounds.size()) == n) {
+      row.bound_px_median = stats::percentiles(bounds).median;
+      row.bound_px_max = stats::percentiles(bounds).max;
+    }
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%-36s %d frames: median %.2f ms, p95 %.2f ms, horizon mean %.3f px, max %.0f px (%.1f s)",
+                  label.c_str(), row.frames, row.frame_ms_median, row.frame_ms_p95, row.horizon_mean_px,
+                  row.horizon_max_px, ms_since(t_variant) / 1000.0);
+    progress.line(buf);
+    rows.push_back(row);
+  }
+  progress.finish();
+
+  // The matched-error target: --match-px, else the two-level method's default.
+  std::optional<double> match_target = args.match_px;
+  std::string target_source = "--match-px";
+  if (!match_target)
+    for (const auto& r : rows)
+      if (r.method == "twolevel" && r.default_knob) {
+        match_target = r.horizon_mean_px;
+        target_source = "the two-level method's default setting";
+      }
+
+  BenchContext c;
+  c.command_line = args.command_line;
+  c.scenario_name = s.name;
+  c.scenario_file = args.scenario;
+  c.gl_renderer = runner.context().gl_renderer();
+  c.gl_version = runner.context().gl_version();
+  c.cpu = cpu_description();
+  c.host = host_name();
+  char terrain[512];
+  std::snprintf(terrain, sizeof terrain, "%s (%dx%d samples, %.1f x %.1f m spacing, loaded in %.0f ms)",
+                hf.source.c_str(), hf.width, hf.height, hf.spacing_x_m, hf.spacing_y_m, runner.load_ms());
+  c.terrain = terrain;
+  c.width = width;
+  c.height = height;
+  c.fov_y_deg = ref_channel.spec.fov_y_deg.value_or(s.render.fov_y_deg);
+  c.frames = int(frames.size());
+  c.scenario_frames = runner.frame_count();
+  c.time_step_s = s.time_step_s;
+  c.frame_indices = frames;
+  for (int p : sample_pos) c.sample_indices.push_back(frames[p]);
+  c.sweep = args.sweep;
+  c.wall_s = ms_since(start) / 1000.0;
+
+  write_bench_csv((out / "results.csv").string(), rows);
+  write_bench_markdown((out / "results.md").string(), c, rows, match_target, target_source);
+  const bool plotted = plot_error_vs_time((out / "error_vs_time.png").string(), rows, match_target,
+                                          s.name + " / " + std::to_string(width) + "x" + std::to_string(height) +
+                                              " / FOV " + std::to_string(int(std::lround(c.fov_y_deg))) + " / " +
+                                              c.gl_renderer);
+  std::printf("ig bench: %s, %zu method/knob rows x %d frames at %dx%d, FOV %g, on %s in %.1f s\n", s.name.c_str(),
+              rows.size(), c.frames, width, height, c.fov_y_deg, c.gl_renderer.c_str(), ms_since(start) / 1000.0);
+  std::printf("ig bench: outputs in %s (results.csv, results.md, frames.csv, samples.csv%s)\n",
+              out.string().c_str(), plotted ? ", error_vs_time.png" : "");
+  return plotted ? 0 : 1;
+}
+
 }  // namespace
 
 int run_bench_command(const std::vector<std::string>& argv) {
-  const auto parsed = parse_or_usage("ig bench", kUsage, parse_args, argv);
-  if (!parsed) return help_requested(argv) ? 0 : 2;
-  const Args& args = *parsed;
-  const auto start = Clock::now();
-  try {
-    io::Scenario scenario = io::load_scenario(args.scenario);
-    namespace fs = std::filesystem;
-    const fs::path out = args.out_dir.empty() ? fs::path("out") / (scenario.name + "_bench") : fs::path(args.out_dir);
-    fs::create_directories(out);
-
-    // The first channel only; --fov replaces the scenario's (and that channel's own) field of view.
-    scenario.channels.resize(1);
-    if (args.fov) {
-      scenario.render.fov_y_deg = *args.fov;
-      scenario.channels[0].fov_y_deg.reset();
-    }
-    session::RunOptions run;
-    run.width = args.width;
-    run.height = args.height;
-    run.method = "reference";
-    run.headless = true;
-    run.shader_dir = args.shader_dir.empty() ? gl::default_shader_dir() : args.shader_dir;
-    session::ScenarioRunner runner(std::move(scenario), run);
-    const auto& s = runner.scenario();
-    const auto& hf = runner.heightfield();
-    const int width = s.render.width, height = s.render.height;
-    render::TwoLevelOptions tl_options = s.render.twolevel;
-    tl_options.skip_passes = args.skip_passes;
-
-    const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
-    const std::vector<int> sample_pos = sample_positions(int(frames.size()), args.error_samples);
-    std::vector<Variant> variants;
-    for (const auto& m : args.methods)
-      for (auto& v : variants_for(m, args.sweep, runner.scene(), run.shader_dir, tl_options)) variants.push_back(v);
-
-    Progress progress(isatty(STDERR_FILENO) != 0,
-                      (long long)sample_pos.size() + (long long)variants.size() * (long long)frames.size());
-
-    // Reference frames for the sampled frames, rendered once and kept.
-    auto& ref_channel = runner.channels().front();
-    std::map<int, stats::FrameImage> reference;  // by position in `frames`
-    std::map<int, render::Camera> reference_camera;
-    {
-      const auto t0 = Clock::now();
-      for (int p : sample_pos) {
-        runner.render_frame(frames[p]);
-        reference[p] = stats::read_frame_image(*ref_channel.target);
-        reference_camera[p] = ref_channel.camera;
-        progress.step("reference images", int(reference.size()), int(sample_pos.size()));
-      }
-      char buf[160];
-      std::snprintf(buf, sizeof buf, "%zu reference frames at %dx%d in %.1f s", sample_pos.size(), width, height,
-                    ms_since(t0) / 1000.0);
-      progress.line(buf);
-    }
-
-    auto camera_at = [&](int frame) {
-      return runner.camera_for(runner.pose_at(frame * s.time_step_s), ref_channel);
-    };
-    gl::RenderTarget target(width, height);
-    stats::FrameLog frames_csv((out / "frames.csv").string());
-    stats::FrameLog samples_csv((out / "samples.csv").string());
-    std::vector<BenchRow> rows;
-    for (const Variant& v : variants) {
-      const auto t_variant = Clock::now();
-      BenchRow row;
-      row.method = v.method;
-      const auto t0 = Clock::now();
-      auto method = render::make_method(v.method, runner.scene(), run.shader_dir, tl_options, v.knob);
-      row.build_ms = ms_since(t0);
-      row.knob = method->knob();
-      row.default_knob = v.is_default;
-      render::FrameRenderer renderer(runner.scene(), *method, run.shader_dir);
-      const std::string label = label_of(v, *method);
-      const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
-
-      renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
-      std::vector<double> frame_ms, cpu_ms, lod_ms, triangles, bounds, depth_p95, vs, fs, prims, draws, uploads;
-      double horizon_sum = 0.0, sq_sum = 0.0, samples_px = 0.0, holes = 0.0, interior_holes = 0.0, enclosed_holes = 0.0,
-             ref_px = 0.0;
-      size_t next_sample = 0;
-      for (int i = 0; i < int(frames.size()); ++i) {
-        const render::Camera camera = camera_at(frames[i]);
-        const auto tf = Clock::now();
-        const double cpu0 = process_cpu_ms();
-        const render::ViewResult vr = renderer.render(camera, target);
-        const double cpu = process_cpu_ms() - cpu0;
-        const double ms = ms_since(tf);
-        frame_ms.push_back(ms);
-        cpu_ms.push_back(cpu);
-        lod_ms.push_back(vr.timings.lod_ms);
-        triangles.push_back(double(vr.method.triangles));
-        vs.push_back(double(vr.total.vs_invocations));
-        fs.push_back(double(vr.total.fs_invocations));
-        prims.push_back(double(vr.total.primitives));
-        draws.push_back(double(vr.total.draw_calls));
-        uploads.push_back(double(vr.total.bytes_uploaded));
-        std::vector<stats::Cell> frame_row = {{"method", v.method},
-                                              knob_cell,
-                                              {"frame", frames[i]},
-                                              {"frame_ms", ms},
-                                              {"cpu_ms", cpu},
-                                              {"lod_ms", vr.timings.lod_ms},
-                                              {"terrain_ms", vr.timings.terrain_ms},
-                                              {"sky_ms", vr.timings.sky_ms},
-                                              {"triangles", vr.method.triangles}};
-        session::append_work_columns(frame_row, vr, /*per_pass=*/false);
-        frames_csv.add_row(frame_row);
-        if (next_sample < sample_pos.size() && sample_pos[next_sample] == i) {
-          ++next_sample;
-          if (reference_camera[i].position != camera.position)
-            throw std::logic_error("reference and method cameras differ at frame " + std::to_string(frames[i]));
-          const stats::FrameImage img = stats::read_frame_image(target);
-          const stats::ImageError e = stats::image_error(img, reference[i], camera);
-          const auto bound = method->error_bound_px(camera, height);
-          horizon_sum += e.horizon_mean_px;
-          row.horizon_max_px = std::max(row.horizon_max_px, e.horizon_max_px);
-          depth_p95.push_back(e.depth_rel_p95);
-          row.depth_rel_max = std::max(row.depth_rel_max, e.depth_rel_max);
-          sq_sum += e.mse * 3.0 * width * height;
-          samples_px += 3.0 * width * height;
-          holes += double(e.holes);
-          interior_holes += double(e.interior_holes);
-          enclosed_holes += double(e.enclosed_holes);
-          ref_px += double(e.reference_terrain_pixels);
-          if (bound) bounds.push_back(*bound);
-          samples_csv.add_row({{"method", v.method},
-                               knob_cell,
-                               {"frame", frames[i]},
-                               {"frame_ms", ms},
-                               {"horizon_mean_px", e.horizon_mean_px},
-                               {"horizon_max_px", e.horizon_max_px},
-                               {"horizon_columns", e.horizon_columns},
-                               {"depth_rel_p95", g6(e.depth_rel_p95)},
-                               {"depth_rel_max", g6(e.depth_rel_max)},
-                               {"psnr_db", e.psnr_db},
-                               {"holes", e.holes},
-                               {"interior_holes", e.interior_holes},
-                               {"enclosed_holes", e.enclosed_holes},
-                               {"reference_terrain_px", e.reference_terrain_pixels},
-                               bound ? stats::Cell("bound_px", *bound) : stats::Cell("bound_px", std::string())});
-        }
-        progress.step(label, i + 1, int(frames.size()));
-      }
-      const int n = int(sample_pos.size());
-      row.frames = int(frames.size());
-      row.frame_ms_median = stats::percentiles(frame_ms).median;
-      row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
-      row.lod_ms_median = stats::percentiles(lod_ms).median;
-      row.cpu_ms_median = stats::percentiles(cpu_ms).median;
-      row.triangles_median = stats::percentiles(triangles).median;
-      row.vs_invocations_median = stats::percentiles(vs).median;
-      row.fs_invocations_median = stats::percentiles(fs).median;
-      row.primitives_median = stats::percentiles(prims).median;
-      row.draw_calls_median = stats::percentiles(draws).median;
-      row.upload_bytes_median = stats::percentiles(uploads).median;
-      row.error_samples = n;
-      row.horizon_mean_px = n ? horizon_sum / n : 0.0;
-      row.depth_rel_p95 = stats::percentiles(depth_p95).median;
-      row.psnr_db = stats::psnr_db_from_mse(samples_px > 0 ? sq_sum / samples_px : 0.0, samples_px);
-      row.holes_mean = n ? holes / n : 0.0;
-      row.interior_holes_mean = n ? interior_holes / n : 0.0;
-      row.enclosed_holes_mean = n ? enclosed_holes / n : 0.0;
-      row.hole_fraction = ref_px > 0 ? holes / ref_px : 0.0;
-      if (!bounds.empty() && int(bounds.size()) == n) {
-        row.bound_px_median = stats::percentiles(bounds).median;
-        row.bound_px_max = stats::percentiles(bounds).max;
-      }
-      char buf[256];
-      std::snprintf(buf, sizeof buf, "%-36s %d frames: median %.2f ms, p95 %.2f ms, horizon mean %.3f px, max %.0f px (%.1f s)",
-                    label.c_str(), row.frames, row.frame_ms_median, row.frame_ms_p95, row.horizon_mean_px,
-                    row.horizon_max_px, ms_since(t_variant) / 1000.0);
-      progress.line(buf);
-      rows.push_back(row);
-    }
-    progress.finish();
-
-    // The matched-error target: --match-px, else the two-level method's default.
-    std::optional<double> match_target = args.match_px;
-    std::string target_source = "--match-px";
-    if (!match_target)
-      for (const auto& r : rows)
-        if (r.method == "twolevel" && r.default_knob) {
-          match_target = r.horizon_mean_px;
-          target_source = "the two-level method's default setting";
-        }
-
-    BenchContext c;
-    c.command_line = command_line(argv);
-    c.scenario_name = s.name;
-    c.scenario_file = args.scenario;
-    c.gl_renderer = runner.context().gl_renderer();
-    c.gl_version = runner.context().gl_version();
-    c.cpu = cpu_description();
-    c.host = host_name();
-    char terrain[512];
-    std::snprintf(terrain, sizeof terrain, "%s (%dx%d samples, %.1f x %.1f m spacing, loaded in %.0f ms)",
-                  hf.source.c_str(), hf.width, hf.height, hf.spacing_x_m, hf.spacing_y_m, runner.load_ms());
-    c.terrain = terrain;
-    c.width = width;
-    c.height = height;
-    c.fov_y_deg = ref_channel.spec.fov_y_deg.value_or(s.render.fov_y_deg);
-    c.frames = int(frames.size());
-    c.scenario_frames = runner.frame_count();
-    c.time_step_s = s.time_step_s;
-    c.frame_indices = frames;
-    for (int p : sample_pos) c.sample_indices.push_back(frames[p]);
-    c.sweep = args.sweep;
-    c.wall_s = ms_since(start) / 1000.0;
-
-    write_bench_csv((out / "results.csv").string(), rows);
-    write_bench_markdown((out / "results.md").string(), c, rows, match_target, target_source);
-    const bool plotted = plot_error_vs_time((out / "error_vs_time.png").string(), rows, match_target,
-                                            s.name + " / " + std::to_string(width) + "x" + std::to_string(height) +
-                                                " / FOV " + std::to_string(int(std::lround(c.fov_y_deg))) + " / " +
-                                                c.gl_renderer);
-    std::printf("ig bench: %s, %zu method/knob rows x %d frames at %dx%d, FOV %g, on %s in %.1f s\n", s.name.c_str(),
-                rows.size(), c.frames, width, height, c.fov_y_deg, c.gl_renderer.c_str(), ms_since(start) / 1000.0);
-    std::printf("ig bench: outputs in %s (results.csv, results.md, frames.csv, samples.csv%s)\n",
-                out.string().c_str(), plotted ? ", error_vs_time.png" : "");
-    return plotted ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ig bench: " << e.what() << "\n";
-    return 1;
-  }
+  return run_command("ig bench", kUsage, parse_args, argv, run);
 }
 
 }  // namespace ig::app

@@ -26,37 +26,39 @@ CLI::Validator validator(const char* description, Check check) {
       description);
 }
 
+// All of `text` read by `read` (std::stol, std::stod: value, characters
+// used); nullopt when it does not parse or leaves characters over.
+template <class Read>
+auto read_whole(const std::string& text, Read read) -> std::optional<decltype(read(text, nullptr))> {
+  size_t used = 0;
+  try {
+    const auto value = read(text, &used);
+    if (used == text.size()) return value;
+  } catch (const std::logic_error&) {  // std::invalid_argument, std::out_of_range
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int parse_positive_int(const std::string& flag, const std::string& v) {
-  size_t used = 0;
-  long n = 0;
-  try {
-    n = std::stol(v, &used);
-  } catch (...) {
-    used = 0;
-  }
-  if (used != v.size() || n <= 0 || n > 1000000000L)
-    throw UsageError(flag + ": expected a positive integer, got '" + v + "'");
-  return int(n);
+  const auto n = read_whole(v, [](const std::string& t, size_t* used) { return std::stol(t, used); });
+  if (!n || *n <= 0 || *n > 1000000000L) throw UsageError(flag + ": expected a positive integer, got '" + v + "'");
+  return int(*n);
 }
 
 double parse_double(const std::string& flag, const std::string& v) {
-  size_t used = 0;
-  double d = 0;
-  try {
-    d = std::stod(v, &used);
-  } catch (...) {
-    used = 0;
-  }
-  if (used != v.size() || !std::isfinite(d)) throw UsageError(flag + ": expected a number, got '" + v + "'");
-  return d;
+  const auto d = read_whole(v, [](const std::string& t, size_t* used) { return std::stod(t, used); });
+  if (!d || !std::isfinite(*d)) throw UsageError(flag + ": expected a number, got '" + v + "'");
+  return *d;
 }
 
 void parse_command_line(CLI::App& app, const std::vector<std::string>& argv) {
   app.set_help_flag();
   app.allow_extras();
-  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  for (CLI::Option* option : app.get_options())  // given twice, the last value counts (repeatable ones keep all)
+    if (option->get_multi_option_policy() == CLI::MultiOptionPolicy::Throw)
+      option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   try {
     app.parse(std::vector<std::string>(argv.rbegin(), argv.rend()));
   } catch (const CLI::ParseError& e) {

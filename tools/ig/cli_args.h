@@ -43,6 +43,21 @@ auto parse_or_usage(const char* command, const char* usage, Parse parse, const s
   }
 }
 
+// A subcommand from its command line to its exit status: 0 after --help, 2
+// after a usage error (parse_or_usage), else what run(args) returns; 1 after
+// "COMMAND: what" for anything it throws.
+template <class Parse, class Run>
+int run_command(const char* command, const char* usage, Parse parse, const std::vector<std::string>& argv, Run run) {
+  const auto parsed = parse_or_usage(command, usage, parse, argv);
+  if (!parsed) return help_requested(argv) ? 0 : 2;
+  try {
+    return run(*parsed);
+  } catch (const std::exception& e) {
+    std::cerr << command << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
 // Parses argv with the options and positionals `app` declares. Given twice,
 // an option's last value counts. Throws UsageError on any mistake: CLI11's
 // message, or "unknown option X" / "unexpected argument X" for what nothing

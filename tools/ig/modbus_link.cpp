@@ -17,7 +17,7 @@ ModbusLink::ModbusLink(const std::string& endpoint, session::ScenarioRunner& run
   active_.a2 = float(r.twolevel.a2);
   active_.alpha = float(r.twolevel.alpha);
   active_.level0_budget = std::uint32_t(r.twolevel.level0_budget);
-  active_.fog_visibility_m = float(r.fog_visibility_m);
+  active_.fog_visibility_m = float(r.shading.fog_visibility_m);
   active_.latency_mode = std::uint16_t(initial_latency);
   server_ = std::make_unique<io::control::ModbusServer>(io::control::parse_modbus_endpoint(endpoint), active_);
   if (!quiet_)

@@ -145,270 +145,267 @@ struct Packet {
   bool operator<(const Packet& o) const { return send_at_s != o.send_at_s ? send_at_s > o.send_at_s : order > o.order; }
 };
 
+// ig send with its parsed arguments: the exit status.
+int run(const Args& args) {
+  const io::Scenario scenario = io::load_scenario(args.scenario);
+  const terrain::Heightfield hf = session::load_terrain(scenario.terrain);
+  const io::PathInterpolator path(session::place_path(scenario.path, hf));
+  const auto to_geodetic = session::local_to_geodetic(hf);
+  // CANaerospace carries latitude / longitude only; the FD pose is like native.
+  const bool canaerospace = args.can && !args.can_fd;
+  const std::string format = args.can ? (args.can_fd ? "canfd" : "canaerospace") : io::protocol_name(args.protocol);
+  const bool geodetic = args.geodetic || canaerospace || (!args.can && args.protocol != io::Protocol::Native);
+  if (geodetic && !to_geodetic)
+    throw std::runtime_error(args.scenario + ": " + format +
+                             " needs geodetic positions but the terrain has no geographic georeference "
+                             "(give terrain.generator.origin or use --protocol native)");
+  std::unique_ptr<io::net::UdpSender> sender;
+  if (!args.can) sender = std::make_unique<io::net::UdpSender>(args.to);
+#ifdef IG_WITH_CAN
+  // A CAN interface that goes down or away mid-stream is reopened every
+  // 0.1 s; the poses meanwhile are counted as refused.
+  std::unique_ptr<io::can::CanSocket> can;
+  if (args.can) {
+    can = std::make_unique<io::can::CanSocket>(*args.can, 0.1);
+    if (!can->ensure_open(io::net::steady_now_s())) throw std::runtime_error("CAN " + can->last_error());
+  }
+  io::wire::CanAerospaceEncoder canas_encoder([&] {
+    io::wire::CanAerospaceEncodeConfig c;
+    c.node_id = std::uint8_t(args.can_node);
+    c.altitude_id = std::uint16_t(args.can_altitude);
+    c.position_as_double = !args.can_float_position;
+    return c;
+  }());
+#endif
+  std::unique_ptr<io::net::UdpReceiver> sof_socket;
+  if (args.cigi_listen) sof_socket = std::make_unique<io::net::UdpReceiver>(*args.cigi_listen);
+  std::ofstream log;
+  if (args.log) {
+    log.open(*args.log);
+    if (!log) throw std::runtime_error(*args.log + ": cannot create send log");
+    log << "sequence,t_s,sender_time_s,sent,x_m,y_m,z_m,heading_deg,pitch_deg,roll_deg,steady_s\n";
+  }
+
+  const double duration = args.duration_s.value_or(scenario.duration_s);
+  const int count = args.flood ? *args.flood : int(std::floor(duration * args.rate_hz + 1e-9)) + 1;
+  const double period = 1.0 / args.rate_hz;
+  const double start = io::net::steady_now_s() + 0.05;  // a moment to open the receiver's socket
+
+  // One datagram (or the CAN frames) for sequence i: the path at time t,
+  // stamped with the sender's clock (the steady clock) at sender_time.
+  auto make_packet = [&](int i, double t, double sender_time, io::Hpr& hpr, io::Pose& pose) {
+    pose = path.sample(t);
+    const double h = 0.5 * period;
+    const glm::dvec3 velocity = (path.sample(t + h).position - path.sample(std::max(0.0, t - h)).position) /
+                                (t >= h ? 2 * h : h);
+    hpr = io::hpr_from_attitude(pose.attitude);
+    io::wire::PoseMessage m;
+    m.heading_deg = hpr.heading_deg;
+    m.pitch_deg = hpr.pitch_deg;
+    m.roll_deg = hpr.roll_deg;
+    m.sequence = std::uint32_t(i);
+    m.has_sequence = true;
+    m.sender_time_s = sender_time;
+    m.has_sender_time = !args.no_timestamp;
+    m.velocity_mps = velocity;
+    m.has_velocity = true;
+    m.position = pose.position;
+    if (geodetic) {
+      m.frame = io::wire::PoseMessage::Frame::Geodetic;
+      m.position = *to_geodetic(pose.position);
+    }
+    Packet p{0.0, 0, {}, {}, std::uint32_t(i)};
+#ifdef IG_WITH_CAN
+    if (args.can) {
+      if (args.can_fd) p.frames.push_back(io::wire::encode_can_fd_pose(m));
+      else canas_encoder.encode(m, p.frames);
+      return p;
+    }
+#endif
+    switch (args.protocol) {
+      case io::Protocol::Native: {
+        const auto a = io::wire::encode_native(m);
+        p.bytes.assign(a.begin(), a.end());
+        break;
+      }
+      case io::Protocol::Cigi:
+        p.bytes = io::wire::encode_cigi_host_datagram(std::uint32_t(i), io::wire::kCigiModeOperate, m, false);
+        break;
+      case io::Protocol::FgNetFdm: {
+        const auto a = io::wire::encode_fgnetfdm(m);
+        p.bytes.assign(a.begin(), a.end());
+        break;
+      }
+      default: break;  // CAN formats go through --can
+    }
+    return p;
+  };
+
+  Rng rng(args.seed);
+  std::uint64_t lost = 0, duplicated = 0, corrupted = 0, reordered = 0;
+  auto corrupt = [&](Packet& p) {
+    if (!rng.chance(args.corrupt)) return;
+    const int flips = 1 + int(rng.uniform() * 3);
+    for (int k = 0; k < flips; ++k) {
+      if (!p.frames.empty()) {  // a byte of one of the pose's frames
+        auto& f = p.frames[size_t(rng.uniform() * p.frames.size())];
+        if (f.len > 0) f.data[size_t(rng.uniform() * f.len)] ^= std::uint8_t(1 + rng.gen() % 255);
+      } else {
+        p.bytes[size_t(rng.uniform() * p.bytes.size())] ^= std::uint8_t(1 + rng.gen() % 255);
+      }
+    }
+    ++corrupted;
+  };
+  auto log_pose = [&](int i, double t, double sender_time, bool sent, const io::Pose& pose, const io::Hpr& hpr) {
+    if (log.is_open())
+      log << i << "," << t << "," << sender_time - start << "," << sent << "," << pose.position.x << ","
+          << pose.position.y << "," << pose.position.z << "," << hpr.heading_deg << "," << hpr.pitch_deg << ","
+          << hpr.roll_deg << "," << std::setprecision(15) << start + t << std::setprecision(6) << "\n";
+  };
+
+  // Paced: the whole schedule first (impairments decide send times), then
+  // send in time order. Flood: as fast as the socket takes them, each
+  // packet the path at the moment it is sent.
+  std::priority_queue<Packet> queue;
+  if (!args.flood) {
+    int burst_left = 0;
+    std::uint32_t order = 0;
+    double stalled_t = 0.0;  // --stall-every: the host's own (irregular) send clock
+    double last_t = 0.0;
+    for (int i = 0; i < count; ++i) {
+      io::Hpr hpr;
+      io::Pose pose;
+      double t = i * period;
+      if (args.stall_every) {
+        t = stalled_t;
+        const int phase = i % args.stall_every;
+        stalled_t += phase == args.stall_every - 2 ? args.stall_a_ms * 1e-3
+                     : phase == args.stall_every - 1 ? args.stall_b_ms * 1e-3
+                                                      : period;
+      }
+      last_t = t;
+      Packet pk = make_packet(i, t, start + t, hpr, pose);
+      bool sent = true;
+      if (burst_left > 0) --burst_left, sent = false;
+      else if (rng.chance(args.burst_loss)) burst_left = args.burst_length - 1, sent = false;
+      else if (rng.chance(args.loss)) sent = false;
+      log_pose(i, t, start + t, sent, pose, hpr);
+      if (!sent) {
+        ++lost;
+        continue;
+      }
+      corrupt(pk);
+      double at = t + rng.uniform() * args.jitter_ms * 1e-3;
+      // Held up, then sent just before the next one (same send time, earlier order).
+      if (args.pairs && i % args.pairs == args.pairs - 1) at = std::max(at, t + period);
+      if (rng.chance(args.reorder)) at += 1.5 * period, ++reordered;  // overtaken by the next packet
+      pk.send_at_s = at;
+      pk.order = order++;
+      queue.push(pk);
+      if (rng.chance(args.duplicate)) {
+        pk.send_at_s = at + 0.25 * period;
+        pk.order = order++;
+        queue.push(pk);
+        ++duplicated;
+      }
+    }
+    // The log goes on 0.5 s past the last packet (sent = 0): where the host
+    // would have been, to judge the IG's extrapolation after the stream stops.
+    const double end = last_t;
+    for (int j = 1; j * period <= 0.5 + 1e-9; ++j) {
+      io::Hpr hpr;
+      io::Pose pose;
+      make_packet(count - 1 + j, end + j * period, start + end + j * period, hpr, pose);
+      log_pose(count - 1 + j, end + j * period, start + end + j * period, false, pose, hpr);
+    }
+  }
+
+  std::uint64_t sent_ok = 0, send_failed = 0, sof_count = 0, sof_not_increasing = 0;
+  // UDP: one datagram; CAN: every frame of the pose (counted per frame).
+  auto send_packet = [&](const Packet& p) {
+#ifdef IG_WITH_CAN
+    if (can) {
+      for (const auto& f : p.frames) (can->send(f) ? sent_ok : send_failed)++;
+      return;
+    }
+#endif
+    (sender->send(p.bytes) ? sent_ok : send_failed)++;
+  };
+  std::optional<io::wire::CigiStartOfFrame> last_sof;
+  auto poll_sof = [&] {
+    if (!sof_socket) return;
+    sof_socket->poll([&](std::span<const std::uint8_t> d, double, const sockaddr_in&) {
+      const auto r = io::wire::decode_cigi_start_of_frame(d);
+      if (!r.sof) return;
+      if (last_sof && r.sof->ig_frame <= last_sof->ig_frame) ++sof_not_increasing;
+      ++sof_count;
+      last_sof = r.sof;
+    });
+  };
+  if (args.flood) {
+    double next_log = 0.0;
+    for (int i = 0; i < count; ++i) {
+      const double now = io::net::steady_now_s();
+      const double t = std::clamp(now - start, 0.0, duration);
+      io::Hpr hpr;
+      io::Pose pose;
+      Packet pk = make_packet(i, t, now, hpr, pose);
+      if (t >= next_log) log_pose(i, t, now, true, pose, hpr), next_log = t + 0.5 * period;
+      corrupt(pk);
+      send_packet(pk);
+      if (i % 256 == 0) poll_sof();
+    }
+  }
+  std::uint64_t sync_timeouts = 0;
+  while (!queue.empty()) {
+    const Packet p = queue.top();
+    queue.pop();
+    const double wait = start + p.send_at_s - io::net::steady_now_s();
+    if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
+    send_packet(p);
+    if (args.cigi_sync) {
+      // Synchronous host: the next host frame only after the IG's Start Of
+      // Frame for this one (2 s without it: counted, go on).
+      const double give_up = io::net::steady_now_s() + 2.0;
+      while (!last_sof || last_sof->last_host_frame != p.sequence) {
+        const double left = give_up - io::net::steady_now_s();
+        if (left <= 0) {
+          ++sync_timeouts;
+          break;
+        }
+        if (sof_socket->wait_readable(left)) poll_sof();
+      }
+      continue;
+    }
+    poll_sof();
+  }
+  if (sof_socket) {  // the IG answers each frame: collect the last replies
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    poll_sof();
+  }
+  if (!args.quiet) {
+    std::printf("ig send: %d poses as %s to %s: %llu %s sent (%llu refused), %llu lost, %llu duplicated, "
+                "%llu reordered, %llu corrupted\n",
+                count, format.c_str(), args.can ? args.can->c_str() : args.to.c_str(), (unsigned long long)sent_ok,
+                args.can ? "frames" : "datagrams",
+                (unsigned long long)send_failed, (unsigned long long)lost, (unsigned long long)duplicated,
+                (unsigned long long)reordered, (unsigned long long)corrupted);
+    if (sof_socket)
+      std::printf("ig send: %llu CIGI Start Of Frame received, last IG frame %u, last host frame echoed %u, "
+                  "%llu not increasing\n",
+                  (unsigned long long)sof_count, last_sof ? last_sof->ig_frame : 0u,
+                  last_sof ? last_sof->last_host_frame : 0u, (unsigned long long)sof_not_increasing);
+    if (args.cigi_sync)
+      std::printf("ig send: synchronous: %llu host frames answered, %llu timed out\n",
+                  (unsigned long long)(count - lost - sync_timeouts), (unsigned long long)sync_timeouts);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int run_send_command(const std::vector<std::string>& argv) {
-  const auto parsed = parse_or_usage("ig send", kUsage, parse_args, argv);
-  if (!parsed) return help_requested(argv) ? 0 : 2;
-  const Args& args = *parsed;
-  try {
-    const io::Scenario scenario = io::load_scenario(args.scenario);
-    const terrain::Heightfield hf = session::load_terrain(scenario.terrain);
-    const io::PathInterpolator path(session::place_path(scenario.path, hf));
-    const auto to_geodetic = session::local_to_geodetic(hf);
-    // CANaerospace carries latitude / longitude only; the FD pose is like native.
-    const bool canaerospace = args.can && !args.can_fd;
-    const std::string format = args.can ? (args.can_fd ? "canfd" : "canaerospace") : io::protocol_name(args.protocol);
-    const bool geodetic = args.geodetic || canaerospace || (!args.can && args.protocol != io::Protocol::Native);
-    if (geodetic && !to_geodetic)
-      throw std::runtime_error(args.scenario + ": " + format +
-                               " needs geodetic positions but the terrain has no geographic georeference "
-                               "(give terrain.generator.origin or use --protocol native)");
-    std::unique_ptr<io::net::UdpSender> sender;
-    if (!args.can) sender = std::make_unique<io::net::UdpSender>(args.to);
-#ifdef IG_WITH_CAN
-    // A CAN interface that goes down or away mid-stream is reopened every
-    // 0.1 s; the poses meanwhile are counted as refused.
-    std::unique_ptr<io::can::CanSocket> can;
-    if (args.can) {
-      can = std::make_unique<io::can::CanSocket>(*args.can, 0.1);
-      if (!can->ensure_open(io::net::steady_now_s())) throw std::runtime_error("CAN " + can->last_error());
-    }
-    io::wire::CanAerospaceEncoder canas_encoder([&] {
-      io::wire::CanAerospaceEncodeConfig c;
-      c.node_id = std::uint8_t(args.can_node);
-      c.altitude_id = std::uint16_t(args.can_altitude);
-      c.position_as_double = !args.can_float_position;
-      return c;
-    }());
-#endif
-    std::unique_ptr<io::net::UdpReceiver> sof_socket;
-    if (args.cigi_listen) sof_socket = std::make_unique<io::net::UdpReceiver>(*args.cigi_listen);
-    std::ofstream log;
-    if (args.log) {
-      log.open(*args.log);
-      if (!log) throw std::runtime_error(*args.log + ": cannot create send log");
-      log << "sequence,t_s,sender_time_s,sent,x_m,y_m,z_m,heading_deg,pitch_deg,roll_deg,steady_s\n";
-    }
-
-    const double duration = args.duration_s.value_or(scenario.duration_s);
-    const int count = args.flood ? *args.flood : int(std::floor(duration * args.rate_hz + 1e-9)) + 1;
-    const double period = 1.0 / args.rate_hz;
-    const double start = io::net::steady_now_s() + 0.05;  // a moment to open the receiver's socket
-
-    // One datagram (or the CAN frames) for sequence i: the path at time t,
-    // stamped with the sender's clock (the steady clock) at sender_time.
-    auto make_packet = [&](int i, double t, double sender_time, io::Hpr& hpr, io::Pose& pose) {
-      pose = path.sample(t);
-      const double h = 0.5 * period;
-      const glm::dvec3 velocity = (path.sample(t + h).position - path.sample(std::max(0.0, t - h)).position) /
-                                  (t >= h ? 2 * h : h);
-      hpr = io::hpr_from_attitude(pose.attitude);
-      io::wire::PoseMessage m;
-      m.heading_deg = hpr.heading_deg;
-      m.pitch_deg = hpr.pitch_deg;
-      m.roll_deg = hpr.roll_deg;
-      m.sequence = std::uint32_t(i);
-      m.has_sequence = true;
-      m.sender_time_s = sender_time;
-      m.has_sender_time = !args.no_timestamp;
-      m.velocity_mps = velocity;
-      m.has_velocity = true;
-      m.position = pose.position;
-      if (geodetic) {
-        m.frame = io::wire::PoseMessage::Frame::Geodetic;
-        m.position = *to_geodetic(pose.position);
-      }
-      Packet p{0.0, 0, {}, {}, std::uint32_t(i)};
-#ifdef IG_WITH_CAN
-      if (args.can) {
-        if (args.can_fd) p.frames.push_back(io::wire::encode_can_fd_pose(m));
-        else canas_encoder.encode(m, p.frames);
-        return p;
-      }
-#endif
-      switch (args.protocol) {
-        case io::Protocol::Native: {
-          const auto a = io::wire::encode_native(m);
-          p.bytes.assign(a.begin(), a.end());
-          break;
-        }
-        case io::Protocol::Cigi:
-          p.bytes = io::wire::encode_cigi_host_datagram(std::uint32_t(i), io::wire::kCigiModeOperate, m, false);
-          break;
-        case io::Protocol::FgNetFdm: {
-          const auto a = io::wire::encode_fgnetfdm(m);
-          p.bytes.assign(a.begin(), a.end());
-          break;
-        }
-        default: break;  // CAN formats go through --can
-      }
-      return p;
-    };
-
-    Rng rng(args.seed);
-    std::uint64_t lost = 0, duplicated = 0, corrupted = 0, reordered = 0;
-    auto corrupt = [&](Packet& p) {
-      if (!rng.chance(args.corrupt)) return;
-      const int flips = 1 + int(rng.uniform() * 3);
-      for (int k = 0; k < flips; ++k) {
-        if (!p.frames.empty()) {  // a byte of one of the pose's frames
-          auto& f = p.frames[size_t(rng.uniform() * p.frames.size())];
-          if (f.len > 0) f.data[size_t(rng.uniform() * f.len)] ^= std::uint8_t(1 + rng.gen() % 255);
-        } else {
-          p.bytes[size_t(rng.uniform() * p.bytes.size())] ^= std::uint8_t(1 + rng.gen() % 255);
-        }
-      }
-      ++corrupted;
-    };
-    auto log_pose = [&](int i, double t, double sender_time, bool sent, const io::Pose& pose, const io::Hpr& hpr) {
-      if (log.is_open())
-        log << i << "," << t << "," << sender_time - start << "," << sent << "," << pose.position.x << ","
-            << pose.position.y << "," << pose.position.z << "," << hpr.heading_deg << "," << hpr.pitch_deg << ","
-            << hpr.roll_deg << "," << std::setprecision(15) << start + t << std::setprecision(6) << "\n";
-    };
-
-    // Paced: the whole schedule first (impairments decide send times), then
-    // send in time order. Flood: as fast as the socket takes them, each
-    // packet the path at the moment it is sent.
-    std::priority_queue<Packet> queue;
-    if (!args.flood) {
-      int burst_left = 0;
-      std::uint32_t order = 0;
-      double stalled_t = 0.0;  // --stall-every: the host's own (irregular) send clock
-      double last_t = 0.0;
-      for (int i = 0; i < count; ++i) {
-        io::Hpr hpr;
-        io::Pose pose;
-        double t = i * period;
-        if (args.stall_every) {
-          t = stalled_t;
-          const int phase = i % args.stall_every;
-          stalled_t += phase == args.stall_every - 2 ? args.stall_a_ms * 1e-3
-                       : phase == args.stall_every - 1 ? args.stall_b_ms * 1e-3
-                                                        : period;
-        }
-        last_t = t;
-        Packet pk = make_packet(i, t, start + t, hpr, pose);
-        bool sent = true;
-        if (burst_left > 0) --burst_left, sent = false;
-        else if (rng.chance(args.burst_loss)) burst_left = args.burst_length - 1, sent = false;
-        else if (rng.chance(args.loss)) sent = false;
-        log_pose(i, t, start + t, sent, pose, hpr);
-        if (!sent) {
-          ++lost;
-          continue;
-        }
-        corrupt(pk);
-        double at = t + rng.uniform() * args.jitter_ms * 1e-3;
-        // Held up, then sent just before the next one (same send time, earlier order).
-        if (args.pairs && i % args.pairs == args.pairs - 1) at = std::max(at, t + period);
-        if (rng.chance(args.reorder)) at += 1.5 * period, ++reordered;  // overtaken by the next packet
-        pk.send_at_s = at;
-        pk.order = order++;
-        queue.push(pk);
-        if (rng.chance(args.duplicate)) {
-          pk.send_at_s = at + 0.25 * period;
-          pk.order = order++;
-          queue.push(pk);
-          ++duplicated;
-        }
-      }
-      // The log goes on 0.5 s past the last packet (sent = 0): where the host
-      // would have been, to judge the IG's extrapolation after the stream stops.
-      const double end = last_t;
-      for (int j = 1; j * period <= 0.5 + 1e-9; ++j) {
-        io::Hpr hpr;
-        io::Pose pose;
-        make_packet(count - 1 + j, end + j * period, start + end + j * period, hpr, pose);
-        log_pose(count - 1 + j, end + j * period, start + end + j * period, false, pose, hpr);
-      }
-    }
-
-    std::uint64_t sent_ok = 0, send_failed = 0, sof_count = 0, sof_not_increasing = 0;
-    // UDP: one datagram; CAN: every frame of the pose (counted per frame).
-    auto send_packet = [&](const Packet& p) {
-#ifdef IG_WITH_CAN
-      if (can) {
-        for (const auto& f : p.frames) (can->send(f) ? sent_ok : send_failed)++;
-        return;
-      }
-#endif
-      (sender->send(p.bytes) ? sent_ok : send_failed)++;
-    };
-    std::optional<io::wire::CigiStartOfFrame> last_sof;
-    auto poll_sof = [&] {
-      if (!sof_socket) return;
-      sof_socket->poll([&](std::span<const std::uint8_t> d, double, const sockaddr_in&) {
-        const auto r = io::wire::decode_cigi_start_of_frame(d);
-        if (!r.sof) return;
-        if (last_sof && r.sof->ig_frame <= last_sof->ig_frame) ++sof_not_increasing;
-        ++sof_count;
-        last_sof = r.sof;
-      });
-    };
-    if (args.flood) {
-      double next_log = 0.0;
-      for (int i = 0; i < count; ++i) {
-        const double now = io::net::steady_now_s();
-        const double t = std::clamp(now - start, 0.0, duration);
-        io::Hpr hpr;
-        io::Pose pose;
-        Packet pk = make_packet(i, t, now, hpr, pose);
-        if (t >= next_log) log_pose(i, t, now, true, pose, hpr), next_log = t + 0.5 * period;
-        corrupt(pk);
-        send_packet(pk);
-        if (i % 256 == 0) poll_sof();
-      }
-    }
-    std::uint64_t sync_timeouts = 0;
-    while (!queue.empty()) {
-      const Packet p = queue.top();
-      queue.pop();
-      const double wait = start + p.send_at_s - io::net::steady_now_s();
-      if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
-      send_packet(p);
-      if (args.cigi_sync) {
-        // Synchronous host: the next host frame only after the IG's Start Of
-        // Frame for this one (2 s without it: counted, go on).
-        const double give_up = io::net::steady_now_s() + 2.0;
-        while (!last_sof || last_sof->last_host_frame != p.sequence) {
-          const double left = give_up - io::net::steady_now_s();
-          if (left <= 0) {
-            ++sync_timeouts;
-            break;
-          }
-          if (sof_socket->wait_readable(left)) poll_sof();
-        }
-        continue;
-      }
-      poll_sof();
-    }
-    if (sof_socket) {  // the IG answers each frame: collect the last replies
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      poll_sof();
-    }
-    if (!args.quiet) {
-      std::printf("ig send: %d poses as %s to %s: %llu %s sent (%llu refused), %llu lost, %llu duplicated, "
-                  "%llu reordered, %llu corrupted\n",
-                  count, format.c_str(), args.can ? args.can->c_str() : args.to.c_str(), (unsigned long long)sent_ok,
-                  args.can ? "frames" : "datagrams",
-                  (unsigned long long)send_failed, (unsigned long long)lost, (unsigned long long)duplicated,
-                  (unsigned long long)reordered, (unsigned long long)corrupted);
-      if (sof_socket)
-        std::printf("ig send: %llu CIGI Start Of Frame received, last IG frame %u, last host frame echoed %u, "
-                    "%llu not increasing\n",
-                    (unsigned long long)sof_count, last_sof ? last_sof->ig_frame : 0u,
-                    last_sof ? last_sof->last_host_frame : 0u, (unsigned long long)sof_not_increasing);
-      if (args.cigi_sync)
-        std::printf("ig send: synchronous: %llu host frames answered, %llu timed out\n",
-                    (unsigned long long)(count - lost - sync_timeouts), (unsigned long long)sync_timeouts);
-    }
-    return 0;
-  } catch (const std::exception& e) {
-    std::cerr << "ig send: " << e.what() << "\n";
-    return 1;
-  }
+  return run_command("ig send", kUsage, parse_args, argv, run);
 }
 
 }  // namespace ig::app

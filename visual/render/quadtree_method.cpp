@@ -27,17 +27,13 @@ void QuadtreeMethod::update(const Camera& camera) {
 }
 
 MethodFrameStats QuadtreeMethod::draw(const Camera& camera, const gl::RenderTarget&) {
-  stream_.draw(tess_.vertices(), scene_, camera);
   const auto& s = tess_.stats();
-  MethodFrameStats stats;
-  stats.triangles = s.triangles;
-  stats.passes = s.triangles > 0 ? "terrain" : "";
-  stats.columns = {{"nodes_evaluated", double(s.evaluated)},
-                   {"splits", double(s.splits)},
-                   {"forced_splits", double(s.forced_splits)},
-                   {"leaves", double(s.leaves)},
-                   {"culled_leaves", double(s.culled)}};
-  return stats;
+  return stream_.draw_frame(tess_.vertices(), scene_, camera, s.triangles,
+                            {{"nodes_evaluated", double(s.evaluated)},
+                             {"splits", double(s.splits)},
+                             {"forced_splits", double(s.forced_splits)},
+                             {"leaves", double(s.leaves)},
+                             {"culled_leaves", double(s.culled)}});
 }
 
 std::optional<double> QuadtreeMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {

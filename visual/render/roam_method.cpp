@@ -33,16 +33,12 @@ void RoamMethod::update(const Camera& camera) {
 }
 
 MethodFrameStats RoamMethod::draw(const Camera& camera, const gl::RenderTarget&) {
-  stream_.draw(tess_.vertices(), scene_, camera);
   const auto& s = tess_.stats();
-  MethodFrameStats stats;
-  stats.triangles = s.triangles;
-  stats.passes = s.triangles > 0 ? "terrain" : "";
-  stats.columns = {{"splits", double(s.splits)},
-                   {"forced_splits", double(s.forced_splits)},
-                   {"bintree_nodes", double(s.nodes)},
-                   {"culled_leaves", double(s.culled)}};
-  return stats;
+  return stream_.draw_frame(tess_.vertices(), scene_, camera, s.triangles,
+                            {{"splits", double(s.splits)},
+                             {"forced_splits", double(s.forced_splits)},
+                             {"bintree_nodes", double(s.nodes)},
+                             {"culled_leaves", double(s.culled)}});
 }
 
 std::optional<double> RoamMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {

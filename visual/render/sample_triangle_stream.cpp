@@ -40,4 +40,15 @@ void SampleTriangleStream::draw(const std::vector<glm::u16vec2>& vertices, const
   gl::count_draw();
 }
 
+MethodFrameStats SampleTriangleStream::draw_frame(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene,
+                                                 const Camera& camera, long long triangles,
+                                                 std::vector<std::pair<std::string, double>> columns) {
+  draw(vertices, scene, camera);
+  MethodFrameStats stats;
+  stats.triangles = triangles;
+  stats.passes = triangles > 0 ? "terrain" : "";
+  stats.columns = std::move(columns);
+  return stats;
+}
+
 }  // namespace ig::render

@@ -13,6 +13,7 @@
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/camera.h"
+#include "render/terrain_method.h"
 #include "render/terrain_scene.h"
 
 namespace ig::render {
@@ -23,6 +24,11 @@ class SampleTriangleStream {
 
   // Uploads 3 vertices per triangle and draws them into the bound target.
   void draw(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene, const Camera& camera);
+  // draw(), then the frame's stats: `triangles` in one pass named "terrain"
+  // (no pass when there are none) and the method's own log columns.
+  MethodFrameStats draw_frame(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene,
+                              const Camera& camera, long long triangles,
+                              std::vector<std::pair<std::string, double>> columns);
 
  private:
   gl::ShaderProgram program_;

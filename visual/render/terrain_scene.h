@@ -28,6 +28,7 @@
 
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
+#include "options/shading_options.h"
 #include "render/height_window_texture.h"
 #include "render/camera.h"
 #include "terrain/height_pyramid.h"
@@ -35,12 +36,7 @@
 
 namespace ig::render {
 
-struct ShadingParams {
-  glm::vec3 sun_direction{-0.4f, 0.5f, 0.75f};  // towards the sun, ENU
-  glm::vec3 sky_zenith{0.22f, 0.42f, 0.78f};
-  glm::vec3 sky_horizon{0.70f, 0.80f, 0.92f};
-  double fog_visibility_m = 60000.0;  // 0 = no fog
-};
+using ShadingParams = options::ShadingOptions;  // options/shading_options.h
 
 class TerrainScene {
  public:
