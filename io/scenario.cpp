@@ -1,3 +1,6 @@
+// The scenario file parser (schema: docs/scenario.md): one function per
+// section in the schema's order. Over 500 lines because the schema is; kept
+// in one file so every key shares the same checks and error wording.
 #include "io/scenario.h"
 
 #include <algorithm>

@@ -1,3 +1,7 @@
+// The pose filter (docs/pose-filter.md): sender-clock estimation, packet
+// ordering, interpolation and bounded extrapolation in one state machine.
+// Over 500 lines because those steps share one per-stream state; splitting
+// them would spread that state across files.
 #include "io/filter/pose_filter.h"
 
 #include <algorithm>

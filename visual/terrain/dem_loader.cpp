@@ -1,3 +1,7 @@
+// DEM loading for every supported input (GDAL rasters, 16-bit images, .hgt,
+// folders and VRTs through terrain/dem_mosaic.h): one read path, then the
+// shared nodata fill, flip and statistics. Over 500 lines because each
+// format's checks name the file and the reason here, next to the read.
 #include "terrain/dem_loader.h"
 #include "terrain/dem_mosaic.h"
 #include "terrain/gdal_support.h"

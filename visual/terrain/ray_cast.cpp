@@ -1,5 +1,7 @@
 // Ray casts against the rendered heightfield surface; see ray_cast.h and
-// docs/ray-cast.md.
+// docs/ray-cast.md. Over 500 lines because the pyramid cast, the DDA cast
+// and the curved-ray cast share the edge arithmetic below, which must be the
+// same code in every one of them to stay watertight.
 //
 // The watertight property relies on every shared quantity (a vertex's
 // ray-space coordinates, an edge's edge function) being computed by the same
