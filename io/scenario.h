@@ -12,6 +12,7 @@
 
 #include "io/filter/pose_filter.h"
 #include "options/shading_options.h"
+#include "options/terrain_options.h"
 #include "options/twolevel_options.h"
 
 namespace ig::io {
@@ -21,26 +22,13 @@ struct ScenarioError : std::runtime_error {
 };
 
 // Parameters of the seeded fractal terrain generator (fBm + ridged noise).
-struct GeneratorSpec {
-  int size = 1025;            // samples a side, must be 2^n + 1
-  unsigned seed = 1;
-  double spacing_m = 30.0;    // ground spacing, both axes
-  double relief_m = 1500.0;   // height range of the fractal before offset
-  double base_m = 0.0;        // added to every sample
-  int octaves = 9;
-  double ridge_weight = 0.5;  // 0 = pure fBm, 1 = pure ridged noise
-  // WGS84 latitude/longitude of the south-west sample: georeferences the
-  // generated terrain so it takes geodetic poses (CIGI, FlightGear).
-  std::optional<std::array<double, 2>> origin_lat_lon;
-};
+using GeneratorSpec = options::SyntheticTerrainOptions;  // options/terrain_options.h
 
-struct TerrainSpec {
+// How a file is read (encoding, scale, offset, spacing_m) comes from
+// options::DemLoadOptions, the loader's own settings.
+struct TerrainSpec : options::DemLoadOptions {
   // Exactly one of file / generator is set.
   std::optional<std::string> file;  // environment variables already expanded
-  std::string encoding = "auto";    // auto | terrain-rgb | png16
-  double scale = 1.0;               // png16: metres = value * scale + offset
-  double offset = 0.0;
-  std::optional<double> spacing_m;  // overrides the file's spacing (images have none)
   std::optional<GeneratorSpec> generator;
   // Samples a side of the full-resolution height window the two-level
   // method reads around Level1 (render/height_window_texture.h); 0 = none.

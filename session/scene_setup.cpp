@@ -14,26 +14,13 @@ namespace ig::session {
 terrain::Heightfield load_terrain(const io::TerrainSpec& spec) {
   if (spec.generator) {
     const auto& g = *spec.generator;
-    terrain::SyntheticTerrainParams p;
-    p.size = g.size;
-    p.seed = g.seed;
-    p.spacing_m = g.spacing_m;
-    p.relief_m = g.relief_m;
-    p.base_m = g.base_m;
-    p.octaves = g.octaves;
-    p.ridge_weight = g.ridge_weight;
-    terrain::Heightfield hf = terrain::generate_synthetic_terrain(p);
+    terrain::Heightfield hf = terrain::generate_synthetic_terrain(g);
     if (g.origin_lat_lon)
       hf.georef = terrain::make_geographic_georef((*g.origin_lat_lon)[0], (*g.origin_lat_lon)[1], hf.spacing_x_m,
                                                   hf.spacing_y_m);
     return hf;
   }
-  terrain::DemLoadOptions o;
-  o.encoding = spec.encoding;
-  o.scale = spec.scale;
-  o.offset = spec.offset;
-  o.spacing_m = spec.spacing_m;
-  return terrain::load_dem(*spec.file, o);
+  return terrain::load_dem(*spec.file, spec);  // its DemLoadOptions part
 }
 
 io::PathSpec place_path(const io::PathSpec& path, const terrain::Heightfield& hf) {

@@ -21,6 +21,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "options/terrain_options.h"
 #include "terrain/heightfield.h"
 
 namespace ig::terrain {
@@ -35,18 +36,7 @@ struct DemError : std::runtime_error {
   std::string reason_;
 };
 
-struct DemLoadOptions {
-  // "auto": PNG files (by signature) go to png16 (1-channel 16-bit) or
-  // terrain-rgb (8-bit RGB/RGBA); everything else goes to GDAL.
-  // "terrain-rgb" / "png16": force that image decoding (OpenImageIO).
-  // "gdal": force GDAL.
-  std::string encoding = "auto";
-  double scale = 1.0;   // png16 only: metres = value * scale + offset
-  double offset = 0.0;  // png16 only
-  // Overrides the sample spacing (both axes, metres) for any format. Images
-  // need it to have real-world spacing; they default to 1 m.
-  std::optional<double> spacing_m;
-};
+using DemLoadOptions = options::DemLoadOptions;  // options/terrain_options.h
 
 // Loads a DEM; throws DemError on any failure (message "<path>: <reason>").
 // A folder is read as a mosaic of the DEM tiles in it (terrain/dem_mosaic.h).

@@ -15,19 +15,12 @@
 
 #include <stdexcept>
 
+#include "options/terrain_options.h"
 #include "terrain/heightfield.h"
 
 namespace ig::terrain {
 
-struct SyntheticTerrainParams {
-  int size = 1025;           // samples per side: 2^n + 1, 3 ... 16385
-  unsigned seed = 1;         // any value; different seeds give different terrain
-  double spacing_m = 30;     // sample spacing (both axes), > 0
-  double relief_m = 1500;    // max - min height, >= 0
-  double base_m = 0;         // lowest height
-  int octaves = 9;           // noise octaves, 1 ... 24
-  double ridge_weight = 0.5; // 0 = rolling fBm hills, 1 = pure ridged mountains
-};
+using SyntheticTerrainParams = options::SyntheticTerrainOptions;  // options/terrain_options.h
 
 // Throws std::invalid_argument (naming the bad value) for invalid params.
 // The result has no georef; source = "synthetic(seed=S,size=N)".

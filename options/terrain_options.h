@@ -1,0 +1,42 @@
+#pragma once
+// Terrain source settings, one struct each for every place that sets them:
+// the scenario file's terrain block (io/scenario.cpp), the DEM loader
+// (visual/terrain/dem_loader.h) and the terrain generator
+// (visual/terrain/synthetic_terrain.h). Plain data, no GL.
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace ig::options {
+
+// How a DEM file is read (terrain.encoding, scale, offset, spacing_m).
+struct DemLoadOptions {
+  // "auto": PNG files (by signature) go to png16 (1-channel 16-bit) or
+  // terrain-rgb (8-bit RGB/RGBA); everything else goes to GDAL.
+  // "terrain-rgb" / "png16": force that image decoding (OpenImageIO).
+  // "gdal": force GDAL.
+  std::string encoding = "auto";
+  double scale = 1.0;   // png16 only: metres = value * scale + offset
+  double offset = 0.0;  // png16 only
+  // Overrides the sample spacing (both axes, metres) for any format. Images
+  // need it to have real-world spacing; they default to 1 m.
+  std::optional<double> spacing_m;
+};
+
+// The fractal terrain generator (terrain.generator).
+struct SyntheticTerrainOptions {
+  int size = 1025;            // samples per side: 2^n + 1, 3 ... 16385
+  unsigned seed = 1;          // any value; different seeds give different terrain
+  double spacing_m = 30.0;    // sample spacing (both axes), > 0
+  double relief_m = 1500.0;   // max - min height, >= 0
+  double base_m = 0.0;        // lowest height
+  int octaves = 9;            // noise octaves, 1 ... 24
+  double ridge_weight = 0.5;  // 0 = rolling fBm hills, 1 = pure ridged mountains
+  // WGS84 latitude/longitude of the south-west sample: the session
+  // georeferences the generated terrain with it so it takes geodetic poses
+  // (CIGI, FlightGear). The generator itself ignores it.
+  std::optional<std::array<double, 2>> origin_lat_lon;
+};
+
+}  // namespace ig::options
