@@ -30,7 +30,7 @@
 #include "render/terrain_scene.h"
 #include "render/twolevel_method.h"  // make_method() takes TwoLevelOptions
 #include "terrain/synthetic_terrain.h"
-#include "unit/lod_test_terrain.h"
+#include "lod/test/lod_test_terrain.h"
 
 namespace lod_views {
 

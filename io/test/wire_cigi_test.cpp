@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "unit/wire_test_support.h"
+#include "io/test/wire_test_support.h"
 
 namespace {
 

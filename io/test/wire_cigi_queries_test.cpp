@@ -12,7 +12,7 @@
 
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
-#include "wire_test_support.h"
+#include "io/test/wire_test_support.h"
 
 namespace {
 

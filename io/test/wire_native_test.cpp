@@ -13,7 +13,7 @@
 
 #include "io/wire/byte_io.h"
 #include "io/wire/crc32.h"
-#include "unit/wire_test_support.h"
+#include "io/test/wire_test_support.h"
 
 namespace {
 

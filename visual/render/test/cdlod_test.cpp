@@ -7,7 +7,7 @@
 
 #include <cstdio>
 
-#include "gl/lod_view_checks.h"
+#include "render/test/lod_view_checks.h"
 #include "render/cdlod_method.h"
 
 namespace {

@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "gl/lod_view_checks.h"
+#include "render/test/lod_view_checks.h"
 #include "render/geomipmap_method.h"
 
 namespace {

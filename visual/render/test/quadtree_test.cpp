@@ -9,10 +9,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "gl/lod_view_checks.h"
+#include "render/test/lod_view_checks.h"
 #include "lod/quadtree_tessellator.h"
 #include "render/quadtree_method.h"
-#include "unit/lod_mesh_checks.h"
+#include "lod/test/lod_mesh_checks.h"
 
 namespace {
 

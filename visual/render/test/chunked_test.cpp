@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "gl/lod_view_checks.h"
+#include "render/test/lod_view_checks.h"
 #include "render/chunked_method.h"
 
 namespace {

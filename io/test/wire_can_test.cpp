@@ -15,7 +15,7 @@
 #include "io/wire/can_frame.h"
 #include "io/wire/canaerospace.h"
 #include "io/wire/crc32.h"
-#include "unit/wire_test_support.h"
+#include "io/test/wire_test_support.h"
 
 namespace {
 
