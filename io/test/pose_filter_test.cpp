@@ -2,6 +2,8 @@
 // sent as a 60 Hz packet stream with loss, jitter, reordering, duplicates,
 // clock jumps and dropouts, sampled by a 60 Hz render clock. The printed
 // "[filter]" lines are the measured error table of docs/pose-filter.md.
+// Long because each impairment (loss, jitter, reordering, duplicates, clock
+// jumps, dropouts) gets its own trajectory and error check against one truth.
 #include "io/filter/pose_filter.h"
 
 #include <algorithm>

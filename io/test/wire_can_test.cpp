@@ -1,5 +1,7 @@
 // Host-side CAN codecs: CANaerospace frames, the pose assembler and the CAN FD
 // single-frame pose. No sockets.
+// Long because it covers three codecs (CANaerospace frames, the pose
+// assembler, CAN FD) with their malformed-frame cases side by side.
 #include <bit>
 #include <cmath>
 #include <cstdint>

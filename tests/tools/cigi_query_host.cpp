@@ -27,6 +27,8 @@
 // 1000) after each, more than the IG's per-frame BUDGET, then reads on until
 // every request is answered. Checks: each answer once, no datagram with
 // more than BUDGET HAT/HOT answers, the IG's frames went on (PASS / FAIL).
+// Long because it is a whole CIGI host: every request type in both byte
+// orders, the synchronous frame loop, the checks and the benchmark mode.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -10,6 +10,8 @@
 // controller settles on a steady view).
 //
 // Measured figures are printed (std::printf) and recorded as test properties.
+// Long because every two-level feature (band, eye guard, seams, envelope,
+// size control, skip-pass) is checked here against the same reference frames.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -2,6 +2,7 @@
 // temporary directory (GDAL for rasters, OpenImageIO for PNGs, by hand for
 // .hgt and .asc), plus the bad files that must fail cleanly. The real DEMs in
 // $IG_DEM_DIR (see shared/data/dem/README.md) are checked when it is set.
+// Long because every input format and every bad file has its own case.
 
 #include <gdal.h>
 #include <cpl_conv.h>

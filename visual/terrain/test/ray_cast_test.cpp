@@ -1,5 +1,7 @@
 // Tests for HeightPyramid and cast_ray / cast_ray_dda against an independent
 // brute-force reference (every triangle, Moller-Trumbore in long double).
+// Long because the brute-force reference, the pyramid checks and the ray
+// cases (grazing, edges, curvature) share one set of helpers.
 
 #include <gtest/gtest.h>
 
