@@ -12,7 +12,8 @@
 namespace ig::lod {
 
 // Pixels per radian at the centre of a view of `rows` pixels over a vertical
-// field of view of fov_y_deg degrees: rows / (2 tan(fov / 2)).
+// field of view of fov_y_deg degrees: rows / (2 tan(fov / 2)). The methods'
+// screen-space errors use the same scale (render::pixels_per_radian).
 double pixels_per_radian(int rows, double fov_y_deg);
 
 // The auto budget for the finest channel's pixels per radian: rounded to

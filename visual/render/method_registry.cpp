@@ -1,8 +1,8 @@
 // The one place that maps method names to implementations.
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "lod/level0_budget.h"
 #include "render/cdlod_method.h"
 #include "render/chunked_method.h"
 #include "render/geomipmap_method.h"
@@ -15,7 +15,7 @@
 namespace ig::render {
 
 double pixels_per_radian(const Camera& camera, int viewport_height_px) {
-  return 0.5 * viewport_height_px / std::tan(0.5 * camera.fov_y_deg * M_PI / 180.0);
+  return lod::pixels_per_radian(viewport_height_px, camera.fov_y_deg);
 }
 
 std::vector<std::string> method_names() {
