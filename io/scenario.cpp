@@ -292,7 +292,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
 
 options::TwoLevelOptions parse_twolevel(const json& j, const std::string& path) {
   require_object(j, path);
-  check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride", "band", "eye_guard", "level0_envelope", "level0_error", "predict_size"});
+  check_keys(j, path, {"level0_budget", "a1", "a2", "alpha", "beta", "max_level1", "band_stride", "band", "eye_guard", "level0_envelope", "level0_error", "predict_size", "horizon_culling"});
   options::TwoLevelOptions t;
   if (j.contains("level0_budget")) {
     const auto& b = j["level0_budget"];
@@ -320,6 +320,7 @@ options::TwoLevelOptions parse_twolevel(const json& j, const std::string& path) 
   if (j.contains("level0_envelope"))
     t.level0_envelope = get_bool(j["level0_envelope"], child(path, "level0_envelope"));
   if (j.contains("predict_size")) t.predict_size = get_bool(j["predict_size"], child(path, "predict_size"));
+  if (j.contains("horizon_culling")) t.horizon_culling = get_bool(j["horizon_culling"], child(path, "horizon_culling"));
   return t;
 }
 

@@ -40,6 +40,9 @@ struct TwoLevelOptions {
   // and jumps to the right size (lod/level1_coverage_predictor.h); false:
   // the paper's one step per frame on the measured R alone.
   bool predict_size = true;
+  // Level0 clusters hidden behind nearer terrain are not drawn
+  // (lod/horizon_culling.h); the picture is the same either way.
+  bool horizon_culling = true;
   // For cost breakdowns only (ig bench --skip-pass): passes not drawn,
   // any of "level1", "band", "level0", "count". The image is then wrong.
   std::vector<std::string> skip_passes;

@@ -66,7 +66,7 @@ Level0Clusters::Level0Clusters(const Level0Mesh& mesh, glm::dvec2 spacing_m, int
 }
 
 int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const BoxVisible& visible, IndexRuns& outside,
-                           IndexRuns& crossing) const {
+                           IndexRuns& crossing, const MarkHidden& mark_hidden) const {
   outside.clear();
   crossing.clear();
   auto inside_square = [&](glm::ivec2 lo, glm::ivec2 hi) {
@@ -76,11 +76,25 @@ int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const Box
     return hi.x <= square_lo.x || lo.x >= square_hi.x || hi.y <= square_lo.y || lo.y >= square_hi.y;
   };
   int culled = 0;
-  for (const Cluster& c : clusters_) {
+  in_view_.clear();
+  boxes_.clear();
+  for (std::uint32_t k = 0; k < clusters_.size(); ++k) {
+    const Cluster& c = clusters_[k];
     if (inside_square(c.lo, c.hi)) continue;
     const glm::dvec3 lo(c.lo.x * spacing_.x, c.lo.y * spacing_.y, c.z_lo);
     const glm::dvec3 hi(c.hi.x * spacing_.x, c.hi.y * spacing_.y, c.z_hi);
     if (!visible(lo, hi)) {
+      ++culled;
+      continue;
+    }
+    in_view_.push_back(k);
+    boxes_.push_back({lo, hi});
+  }
+  hidden_.assign(in_view_.size(), 0);
+  if (mark_hidden) mark_hidden(boxes_, hidden_);
+  for (size_t v = 0; v < in_view_.size(); ++v) {
+    const Cluster& c = clusters_[in_view_[v]];
+    if (hidden_[v]) {
       ++culled;
       continue;
     }

@@ -13,6 +13,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "lod/horizon_culling.h"
 #include "lod/roam_level0_mesh.h"
 
 namespace ig::lod {
@@ -43,9 +44,10 @@ class Level0Clusters {
   // Level0's triangles for one frame, given Level1's square [lo, hi] in
   // samples: `outside` wholly outside it, `crossing` across its edge (the
   // discarding program), triangles inside it never. Clusters whose box is not
-  // visible are skipped whole. Returns the number of clusters culled.
+  // visible, or that `mark_hidden` marks, are skipped whole. Returns the
+  // number of clusters culled (out of view or hidden).
   int select(glm::ivec2 square_lo, glm::ivec2 square_hi, const BoxVisible& visible, IndexRuns& outside,
-             IndexRuns& crossing) const;
+             IndexRuns& crossing, const MarkHidden& mark_hidden = {}) const;
 
   int cluster_count() const { return int(clusters_.size()); }
 
@@ -58,6 +60,10 @@ class Level0Clusters {
   const Level0Mesh& mesh_;
   glm::dvec2 spacing_;
   std::vector<Cluster> clusters_;
+  // Per-frame scratch: clusters in view and their boxes.
+  mutable std::vector<std::uint32_t> in_view_;
+  mutable std::vector<HorizonCulling::Box> boxes_;
+  mutable std::vector<std::uint8_t> hidden_;
 };
 
 }  // namespace ig::lod

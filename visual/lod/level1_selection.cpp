@@ -57,9 +57,10 @@ terrain::HeightPyramid::MinMax rect_minmax(const terrain::HeightPyramid& p, int 
 
 std::vector<glm::ivec2> visible_level1_blocks(const terrain::Heightfield& hf, const terrain::HeightPyramid& p,
                                               glm::ivec2 origin, int n, double below_m, const BoxVisible& visible,
-                                              glm::dvec2 eye_grid) {
+                                              glm::dvec2 eye_grid, const MarkHidden& mark_hidden) {
   constexpr int q = kLevel1BlockQuads;
   std::vector<glm::ivec2> out;
+  std::vector<HorizonCulling::Box> boxes;
   const int blocks = (n - 1 + q - 1) / q;
   for (int bj = 0; bj < blocks; ++bj)
     for (int bi = 0; bi < blocks; ++bi) {
@@ -67,8 +68,18 @@ std::vector<glm::ivec2> visible_level1_blocks(const terrain::Heightfield& hf, co
       const auto mm = rect_minmax(p, o.x, o.y, o.x + q, o.y + q);
       const glm::dvec3 lo(o.x * hf.spacing_x_m, o.y * hf.spacing_y_m, mm.lo - below_m);
       const glm::dvec3 hi((o.x + q) * hf.spacing_x_m, (o.y + q) * hf.spacing_y_m, mm.hi);
-      if (visible(lo, hi)) out.push_back(o);
+      if (!visible(lo, hi)) continue;
+      out.push_back(o);
+      boxes.push_back({lo, hi});
     }
+  if (mark_hidden) {
+    std::vector<std::uint8_t> hidden;
+    mark_hidden(boxes, hidden);
+    size_t kept = 0;
+    for (size_t k = 0; k < out.size(); ++k)
+      if (!hidden[k]) out[kept++] = out[k];
+    out.resize(kept);
+  }
   std::sort(out.begin(), out.end(), [&](glm::ivec2 a, glm::ivec2 b) {
     const glm::dvec2 ca = glm::dvec2(a) + 0.5 * q - eye_grid, cb = glm::dvec2(b) + 0.5 * q - eye_grid;
     return glm::dot(ca, ca) < glm::dot(cb, cb);

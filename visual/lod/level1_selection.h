@@ -11,6 +11,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "lod/horizon_culling.h"
 #include "terrain/height_pyramid.h"
 #include "terrain/heightfield.h"
 
@@ -54,9 +55,10 @@ using BoxVisible = std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi
 // cells' min/max heights, the bottom lowered by below_m so a nearby coarser
 // Level0 dip stays inside) pass `visible` (boxes in terrain-local metres),
 // sorted nearest block centre first from eye_grid, so the depth test
-// rejects hidden Level1 fragments before they are shaded.
+// rejects hidden Level1 fragments before they are shaded. Blocks that
+// `mark_hidden` (optional) marks as behind nearer terrain are left out too.
 std::vector<glm::ivec2> visible_level1_blocks(const terrain::Heightfield& hf, const terrain::HeightPyramid& p,
                                               glm::ivec2 origin, int n, double below_m, const BoxVisible& visible,
-                                              glm::dvec2 eye_grid);
+                                              glm::dvec2 eye_grid, const MarkHidden& mark_hidden = {});
 
 }  // namespace ig::lod

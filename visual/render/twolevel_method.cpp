@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "gl/gl_context.h"
 #include "gl/scoped_disable.h"
@@ -11,12 +12,16 @@
 #include "lod/level0_envelope.h"
 #include "lod/level1_coverage_predictor.h"
 #include "lod/level1_selection.h"
+#include "lod/terrain_floors.h"
 #include "render/scene_level0.h"
+#include "terrain/back_faces_hidden.h"
 
 namespace ig::render {
 namespace {
 
 constexpr int kBlockQuads = lod::kLevel1BlockQuads;
+// Occluder cells of 2^5 = 32 samples a side for horizon culling.
+constexpr int kFloorCellLevel = 5;
 
 // Whether any part of the terrain can be in view: the frustum against the
 // min/max pyramid's boxes, descending to nodes of 64 cells. The single
@@ -142,6 +147,9 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
   // Per vertex: sample index (2 x i32) and lift (f32).
   std::vector<std::int32_t> samples;
   level0_clusters_ = std::make_unique<lod::Level0Clusters>(level0_, glm::dvec2(hf.spacing_x_m, hf.spacing_y_m));
+  if (options_.horizon_culling && !pyramid_.empty())
+    horizon_ = std::make_unique<lod::HorizonCulling>(lod::terrain_floors(level0_, pyramid_, kFloorCellLevel),
+                                                     glm::dvec2(hf.spacing_x_m, hf.spacing_y_m));
   for (size_t v = 0; v < level0_.samples.size(); ++v) {
     std::int32_t bits = 0;
     std::memcpy(&bits, &lift[v], 4);
@@ -172,7 +180,8 @@ std::vector<std::string> TwoLevelMethod::pass_names() const {
 }
 
 std::vector<std::string> TwoLevelMethod::column_names() const {
-  return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit"};
+  return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit",
+          "level0_hidden_clusters", "level1_hidden_blocks"};
 }
 
 TwoLevelMethod::SizeMeshes& TwoLevelMethod::meshes_for(int n, int band_w) {
@@ -238,16 +247,31 @@ void TwoLevelMethod::update(const Camera& camera) {
   band_w_ = lod::band_width_samples(level0_resolution_, options_.alpha, n, options_.band_stride);
 
   visible_blocks_.clear();
+  level0_hidden_clusters_ = level1_hidden_blocks_ = 0;
   if (!terrain_visible_) {
     band_visible_ = false;
     return;
   }
+  // Blocks and clusters behind nearer terrain are not drawn either, while
+  // the eye is above what is drawn under it (the DEM, and Level0 when
+  // Level1 does not hold the eye): lod/horizon_culling.h.
+  const bool eye_in_square = eye.x >= origin_.x && eye.y >= origin_.y && eye.x <= origin_.x + n - 1 &&
+                             eye.y <= origin_.y + n - 1;
+  const bool eye_above = terrain::back_faces_hidden(hf, camera.position) &&
+                         (eye_in_square || camera.position.z > level0_heights_.height_at(eye.x, eye.y));
+  int hidden_count = 0;
+  lod::MarkHidden occlusion;
+  if (horizon_ && eye_above)
+    occlusion = [&](const std::vector<lod::HorizonCulling::Box>& boxes, std::vector<std::uint8_t>& hidden) {
+      hidden_count = horizon_->mark_hidden(camera.position, camera.earth_radius_m, 10.0 * camera.near_m, boxes, hidden);
+    };
   visible_blocks_ = lod::visible_level1_blocks(
       hf, pyramid_, origin_, n, level0_.max_error_m,
       [&](const glm::dvec3& lo, const glm::dvec3& hi) {
         return frustum.intersects_box(lo - camera.position, hi - camera.position);
       },
-      eye);
+      eye, occlusion);
+  level1_hidden_blocks_ = std::exchange(hidden_count, 0);
   const glm::ivec2 g0 = origin_ - band_w_, g1 = origin_ + (n - 1) + band_w_;
   const auto mm = lod::rect_minmax(pyramid_, g0.x, g0.y, g1.x, g1.y);
   const glm::dvec3 band_lo =
@@ -267,7 +291,8 @@ void TwoLevelMethod::update(const Camera& camera) {
                            [&](const glm::dvec3& lo, const glm::dvec3& hi) {
                              return frustum.intersects_box(lo - camera.position, hi - camera.position);
                            },
-                           level0_runs_[0], level0_runs_[1]);
+                           level0_runs_[0], level0_runs_[1], occlusion);
+  level0_hidden_clusters_ = hidden_count;
   // As glMultiDrawElements takes them (counts, byte offsets into the index buffer).
   for (int k = 0; k < 2; ++k) {
     draw_counts_[k].assign(level0_runs_[k].count.begin(), level0_runs_[k].count.end());
@@ -482,7 +507,9 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
                    {"band_w", double(band_w_)},
                    {"e_x", look_at_.point.x},
                    {"e_y", look_at_.point.y},
-                   {"e_hit", look_at_.hit ? 1.0 : 0.0}};
+                   {"e_hit", look_at_.hit ? 1.0 : 0.0},
+                   {"level0_hidden_clusters", double(level0_hidden_clusters_)},
+                   {"level1_hidden_blocks", double(level1_hidden_blocks_)}};
   return stats;
 }
 

@@ -63,6 +63,9 @@ class TwoLevelMethod final : public TerrainMethod {
   // Level0's drawn height at a sample position (the walls use it; so do "as drawn" host answers).
   const lod::Level0HeightQuery& level0_heights() const { return level0_heights_; }
   int band_width_samples() const { return band_w_; }
+  // Level0 clusters and Level1 blocks in view but hidden behind nearer terrain this frame (not drawn).
+  int level0_hidden_clusters() const { return level0_hidden_clusters_; }
+  int level1_hidden_blocks() const { return level1_hidden_blocks_; }
   void set_thresholds(double a1, double a2) { controller_.set_thresholds(a1, a2); }
 
  private:
@@ -86,6 +89,9 @@ class TwoLevelMethod final : public TerrainMethod {
   // Level0's static buffer as culled clusters; this frame's runs of it:
   // [0] wholly outside the Level1 square, [1] across its edge.
   std::unique_ptr<lod::Level0Clusters> level0_clusters_;
+  std::unique_ptr<lod::HorizonCulling> horizon_;  // null when options_.horizon_culling is off
+  int level0_hidden_clusters_ = 0;  // Level0 clusters and Level1 blocks hidden behind nearer terrain this frame
+  int level1_hidden_blocks_ = 0;
   std::array<lod::IndexRuns, 2> level0_runs_;
   std::array<std::vector<GLsizei>, 2> draw_counts_;       // the runs as glMultiDrawElements takes them
   std::array<std::vector<const void*>, 2> draw_offsets_;  // (filled in update())

@@ -1,0 +1,189 @@
+#include "lod/horizon_culling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "terrain/earth_curvature.h"
+
+namespace ig::lod {
+
+namespace {
+
+// Direction of (dx, dy) as a number in [0, 4) that grows with the angle (a
+// quarter turn per unit): cheaper than atan2, and bins need only the order.
+double pseudo_angle(double dx, double dy) {
+  const double r = dy / (std::abs(dx) + std::abs(dy));
+  if (dx >= 0) return dy >= 0 ? r : 4.0 + r;
+  return 2.0 - r;
+}
+
+// Float rounding of drawn positions and the shaders' curvature: floors are
+// taken this much lower and boxes this much higher.
+constexpr double kMarginM = 0.1;
+
+constexpr int kRings = 512;
+
+}  // namespace
+
+// Orders `items` by ring_of(distance), stable within a ring.
+template <class RingOf>
+void HorizonCulling::bucket_by_ring(std::vector<Order>& items, RingOf ring_of) {
+  ring_start_.assign(kRings + 2, 0);
+  for (const Order& o : items) ++ring_start_[ring_of(o.distance) + 1];
+  for (int r = 0; r <= kRings; ++r) ring_start_[r + 1] += ring_start_[r];
+  sorted_.resize(items.size());
+  for (const Order& o : items) sorted_[ring_start_[ring_of(o.distance)]++] = o;
+  items.swap(sorted_);
+}
+
+namespace {
+
+}  // namespace
+
+HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int bins)
+    : floors_(std::move(floors)),
+      spacing_(spacing_m),
+      horizon_(size_t(std::max(bins, 4))),
+      wanted_(horizon_.size() + 1) {}
+
+HorizonCulling::Extent HorizonCulling::extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi) {
+  const double nx = std::max({lo.x - eye.x, 0.0, eye.x - hi.x}), ny = std::max({lo.y - eye.y, 0.0, eye.y - hi.y});
+  const double fx = std::max(std::abs(lo.x - eye.x), std::abs(hi.x - eye.x));
+  const double fy = std::max(std::abs(lo.y - eye.y), std::abs(hi.y - eye.y));
+  Extent e{0.0, 4.0, std::sqrt(nx * nx + ny * ny), std::sqrt(fx * fx + fy * fy)};
+  if (e.near <= 0.0) return e;  // the eye is over it: every direction
+  // The eye is outside the rectangle, which therefore spans less than half a
+  // turn: the corners' directions relative to the first one bound it.
+  const double a0 = pseudo_angle(lo.x - eye.x, lo.y - eye.y);
+  double dlo = 0.0, dhi = 0.0;
+  for (int k = 1; k < 4; ++k) {
+    const glm::dvec2 c(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y);
+    double d = pseudo_angle(c.x - eye.x, c.y - eye.y) - a0;
+    if (d > 2.0) d -= 4.0;
+    if (d < -2.0) d += 4.0;
+    dlo = std::min(dlo, d);
+    dhi = std::max(dhi, d);
+  }
+  e.angle_lo = a0 + dlo;
+  e.angle_hi = a0 + dhi;
+  return e;
+}
+
+namespace {
+// Calls f(bin) for bins k0..k1 (unwrapped indices, k0 <= k1 + 1) modulo `bins`.
+template <class F>
+bool each_bin(long k0, long k1, int bins, F f) {
+  if (k1 - k0 + 1 >= bins) k1 = k0 + bins - 1;
+  long b = ((k0 % bins) + bins) % bins;
+  for (long k = k0; k <= k1; ++k) {
+    if (!f(size_t(b))) return false;
+    if (++b == bins) b = 0;
+  }
+  return true;
+}
+}  // namespace
+
+void HorizonCulling::raise(const Extent& e, double slope) {
+  const int bins = int(horizon_.size());
+  const double scale = bins / 4.0;
+  each_bin((long)std::ceil(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale) - 1, bins, [&](size_t b) {
+    horizon_[b] = std::max(horizon_[b], slope);
+    return true;
+  });
+}
+
+bool HorizonCulling::under(const Extent& e, double slope) const {
+  const int bins = int(horizon_.size());
+  const double scale = bins / 4.0;
+  return each_bin((long)std::floor(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale), bins,
+                  [&](size_t b) { return slope < horizon_[b]; });
+}
+
+int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
+                                const std::vector<Box>& boxes, std::vector<std::uint8_t>& hidden) {
+  hidden.assign(boxes.size(), 0);
+  if (floors_.floor_m.empty() || boxes.empty()) return 0;
+  const glm::dvec2 eye2(eye.x, eye.y);
+  const int bins = int(horizon_.size());
+  const double scale = bins / 4.0;
+
+  // The boxes nearest first, and the directions any of them spans
+  // (wanted_[b + 1] - wanted_[a] counts the wanted bins in a..b).
+  box_order_.clear();
+  box_extent_.resize(boxes.size());
+  std::fill(wanted_.begin(), wanted_.end(), 0);
+  double farthest_box = 0.0;
+  for (size_t k = 0; k < boxes.size(); ++k) {
+    const Extent& e = box_extent_[k] = extent_of(eye2, glm::dvec2(boxes[k].lo), glm::dvec2(boxes[k].hi));
+    if (e.near < min_distance_m) continue;
+    box_order_.push_back({e.near, std::uint32_t(k)});
+    farthest_box = std::max(farthest_box, e.near);
+    each_bin((long)std::floor(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale), bins, [&](size_t b) {
+      wanted_[b + 1] = 1;
+      return true;
+    });
+  }
+  // Distances in rings of this width: a floor is swept before a box when
+  // its ring is nearer than the box's (a counting sort, not a full sort).
+  const double ring = std::max(farthest_box, 1.0) / kRings;
+  auto ring_of = [&](double d) { return std::min(int(d / ring), kRings); };
+  bucket_by_ring(box_order_, ring_of);
+  for (int b = 0; b < bins; ++b) wanted_[b + 1] += wanted_[b];
+  auto any_wanted = [&](long k0, long k1) {  // unwrapped bins k0..k1
+    if (k1 < k0) return false;
+    if (k1 - k0 + 1 >= bins) return wanted_[bins] > 0;
+    const long a = ((k0 % bins) + bins) % bins, b = a + (k1 - k0);
+    if (b < bins) return wanted_[b + 1] > wanted_[a];
+    return wanted_[bins] > wanted_[a] || wanted_[b - bins + 1] > 0;
+  };
+
+  // Floors in order of their farthest point: a floor is used only for boxes
+  // wholly beyond it, so where a line passes under it, that is in front of
+  // the box. Floors beyond every box, or in no box's directions, cannot matter.
+  cells_.clear();
+  cell_extent_.resize(floors_.floor_m.size());
+  const int s = floors_.cell_samples;
+  for (int j = 0; j < floors_.ny; ++j) {
+    const double y0 = j * s * spacing_.y, y1 = std::min((j + 1) * s, floors_.grid_cells_y) * spacing_.y;
+    const double ny = std::max({y0 - eye.y, 0.0, eye.y - y1});
+    if (ny > farthest_box) continue;
+    for (int i = 0; i < floors_.nx; ++i) {
+      const double x0 = i * s * spacing_.x, x1 = std::min((i + 1) * s, floors_.grid_cells_x) * spacing_.x;
+      const double nx = std::max({x0 - eye.x, 0.0, eye.x - x1});
+      if (nx * nx + ny * ny > farthest_box * farthest_box) continue;
+      const auto idx = std::uint32_t(j * floors_.nx + i);
+      const Extent& e = cell_extent_[idx] = extent_of(eye2, {x0, y0}, {x1, y1});
+      if (e.near < min_distance_m || e.far > farthest_box) continue;
+      if (!any_wanted((long)std::ceil(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale) - 1)) continue;
+      cells_.push_back({e.far, idx});
+    }
+  }
+  bucket_by_ring(cells_, ring_of);
+
+  std::fill(horizon_.begin(), horizon_.end(), -std::numeric_limits<double>::infinity());
+  size_t next_cell = 0;
+  int count = 0;
+  for (const Order& b : box_order_) {
+    for (const int box_ring = ring_of(b.distance); next_cell < cells_.size() && ring_of(cells_[next_cell].distance) < box_ring;
+         ++next_cell) {
+      const auto idx = cells_[next_cell].index;
+      const Extent& e = cell_extent_[idx];
+      // The floor as drawn, lowest at the cell's far corner; a line at this
+      // slope or lower in any direction inside the cell passes under it.
+      const double rise = floors_.floor_m[idx] - kMarginM - terrain::curvature_drop(e.far, earth_radius_m) - eye.z;
+      raise(e, rise / (rise < 0.0 ? e.near : e.far));
+    }
+    const Extent& e = box_extent_[b.index];
+    // The box's top as drawn, highest at its nearest point: no point of the
+    // box is seen at a steeper slope than this.
+    const double rise = boxes[b.index].hi.z + kMarginM - terrain::curvature_drop(e.near, earth_radius_m) - eye.z;
+    if (under(e, rise / (rise >= 0.0 ? e.near : e.far))) {
+      hidden[b.index] = 1;
+      ++count;
+    }
+  }
+  return count;
+}
+
+}  // namespace ig::lod

@@ -1,0 +1,78 @@
+#pragma once
+// Occlusion culling by the terrain's own horizon (our addition to the
+// two-level method, docs/twolevel.md). Seen from an eye above a heightfield,
+// a point is hidden when the straight line to it passes under the drawn
+// surface anywhere: the line must then cross the surface in front of it.
+// Under each cell of a coarse grid everything below the cell's floor
+// (lod/terrain_floors.h) is solid. Per frame the cells are swept from the
+// eye outwards, keeping for each direction (azimuth bin) the slope a line
+// must exceed to pass over every floor swept so far; a box whose every point
+// lies under that slope in every direction it spans, and beyond every floor
+// swept, is hidden. Conservative: a box with a point that could be visible
+// is never hidden (horizon_culling_test checks against ray casts). Valid only
+// while the eye is above the drawn surface (terrain::back_faces_hidden).
+//
+// Why: at a wide field of view a low eye sees a whole-DEM static Level0 mostly
+// from behind ridges; every hidden triangle still costs vertex and set-up
+// work on any GPU. No GL here.
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "lod/terrain_floors.h"
+
+namespace ig::lod {
+
+class HorizonCulling {
+ public:
+  // spacing_m: metres per DEM sample in x and y; bins: azimuth resolution.
+  HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int bins = 2048);
+
+  // Boxes in terrain-local metres, heights as in the DEM (before the Earth
+  // curvature's drop, which is applied here as the renderer does).
+  struct Box {
+    glm::dvec3 lo, hi;
+  };
+  // hidden[k] = 1 where boxes[k] is hidden from `eye` (terrain-local
+  // metres) by the floors; boxes nearer than min_distance_m horizontally
+  // (the near plane's neighbourhood) are never hidden. Returns how many are.
+  int mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m, const std::vector<Box>& boxes,
+                  std::vector<std::uint8_t>& hidden);
+
+  const TerrainFloors& floors() const { return floors_; }
+
+ private:
+  // A rectangle's directions seen from the eye, in pseudo-angle units [0, 4)
+  // (lo may be below 0 or hi above 4: the span wraps), and its horizontal distances.
+  struct Extent {
+    double angle_lo, angle_hi, near, far;
+  };
+  static Extent extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi);
+  void raise(const Extent& e, double slope);           // bins wholly inside e's directions
+  bool under(const Extent& e, double slope) const;     // every bin e's directions touch
+
+  TerrainFloors floors_;
+  glm::dvec2 spacing_;
+  std::vector<double> horizon_;  // per bin: a line under this slope passes under some floor swept
+  std::vector<int> wanted_;      // prefix counts of the bins some box spans
+  struct Order {
+    double distance;
+    std::uint32_t index;
+    bool operator<(const Order& o) const { return distance < o.distance; }
+  };
+  std::vector<Order> cells_, box_order_, sorted_;  // per-frame scratch
+  std::vector<std::uint32_t> ring_start_;
+  template <class RingOf>
+  void bucket_by_ring(std::vector<Order>& items, RingOf ring_of);
+  std::vector<Extent> cell_extent_, box_extent_;
+};
+
+// A selection's optional occlusion step: given the boxes in view, marks the
+// hidden ones (a HorizonCulling::mark_hidden bound to the frame's eye).
+using MarkHidden = std::function<void(const std::vector<HorizonCulling::Box>&, std::vector<std::uint8_t>&)>;
+
+}  // namespace ig::lod
