@@ -14,49 +14,26 @@
 #include "render/twolevel_method.h"
 #include "session/scenario_runner.h"
 #include "stats/image_error.h"
+#include "view_tour_scenario.h"
 
 namespace {
 
-using ig::io::PathKey;
 using ig::io::Scenario;
 using ig::session::ScenarioRunner;
 
 constexpr int kW = 320, kH = 240, kSettle = 4;
 
-struct View {
-  const char* name;
-  double x, y, agl, heading, pitch;
-};
-const View kViews[] = {
+using render_checks::View;
+const std::vector<View> kViews = {
     {"valley floor", 4000, 3000, 40, 40, 0},       {"low cruise", 7000, 7000, 150, 200, -3},
     {"ridge line", 9000, 4000, 300, 300, -8},      {"climbing", 5000, 9000, 80, 120, 6},
     {"pitched down", 8000, 5000, 500, 10, -30},
 };
-constexpr int kViewCount = int(sizeof kViews / sizeof kViews[0]);
+const int kViewCount = int(kViews.size());
 
 Scenario scenario(bool curved) {
-  Scenario s;
-  s.name = "horizon_culling_render_test";
-  ig::io::GeneratorSpec g;
-  g.size = 513;
-  g.seed = 11;
-  g.spacing_m = 30.0;
-  g.relief_m = 1400.0;
-  g.base_m = 200.0;
-  s.terrain.generator = g;
-  s.render.width = kW;
-  s.render.height = kH;
-  s.render.fov_y_deg = 60.0;
+  Scenario s = render_checks::view_tour_scenario("horizon_culling_render_test", kViews, kW, kH, 60.0);
   s.render.earth_curvature = curved ? "on" : "off";
-  s.channels = {ig::io::ChannelSpec{}};
-  s.path.frame = ig::io::PositionFrame::Local;
-  s.path.altitude = ig::io::AltitudeMode::AboveGround;
-  for (int k = 0; k < kViewCount; ++k) {
-    const View& v = kViews[k];
-    s.path.keys.push_back(PathKey{double(k), {v.x, v.y, v.agl}, v.heading, v.pitch, 0.0});
-  }
-  s.time_step_s = 1.0;
-  s.duration_s = double(kViewCount - 1);
   return s;
 }
 

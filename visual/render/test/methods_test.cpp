@@ -41,55 +41,30 @@
 #include "render/terrain_method.h"
 #include "render/twolevel_method.h"
 #include "stats/image_error.h"
+#include "view_tour_scenario.h"
 
 namespace {
 
 using ig::session::ScenarioRunner;
-using ig::io::PathKey;
 using ig::io::Scenario;
 
 constexpr int kW = 320, kH = 240, kSettle = 10;
 constexpr double kEnclosedHoleFraction = 0.001, kInteriorHoleFraction = 0.02, kHorizonMeanPx = 4.0,
                  kBoundTolerancePx = 1.5;
 
-struct View {
-  const char* name;
-  double x, y, agl, heading, pitch;
-};
-// Over a 513^2 generated terrain, 30 m spacing (15.4 km square).
-const View kViews[] = {
+using render_checks::View;
+const std::vector<View> kViews = {
     {"low cruise", 4000, 3000, 150, 40, -5},
     {"across the valley", 7000, 7000, 300, 200, -2},
     {"pitched down", 8000, 5000, 500, 300, -25},
     {"high oblique", 7500, 7500, 2000, 120, -40},
     {"look-down", 6000, 9000, 800, 0, -80},
 };
-constexpr int kViewCount = int(sizeof kViews / sizeof kViews[0]);
+const int kViewCount = int(kViews.size());
 
 Scenario scenario() {
-  Scenario s;
-  s.name = "methods_test";
-  ig::io::GeneratorSpec g;
-  g.size = 513;
-  g.seed = 11;
-  g.spacing_m = 30.0;
-  g.relief_m = 1400.0;
-  g.base_m = 200.0;
-  s.terrain.generator = g;
-  s.render.width = kW;
-  s.render.height = kH;
-  s.render.fov_y_deg = 45.0;
+  Scenario s = render_checks::view_tour_scenario("methods_test", kViews, kW, kH, 45.0);
   s.render.shading.fog_visibility_m = 30000.0;
-  s.channels = {ig::io::ChannelSpec{}};
-  s.path.frame = ig::io::PositionFrame::Local;
-  s.path.altitude = ig::io::AltitudeMode::AboveGround;
-  // Key k at t = k: frame k shows view k exactly.
-  for (int k = 0; k < kViewCount; ++k) {
-    const View& v = kViews[k];
-    s.path.keys.push_back(PathKey{double(k), {v.x, v.y, v.agl}, v.heading, v.pitch, 0.0});
-  }
-  s.time_step_s = 1.0;
-  s.duration_s = double(kViewCount - 1);
   return s;
 }
 
