@@ -130,11 +130,13 @@ void HeightTileCache::request(int x, int y, int w, int h) const {
     for (auto it = order.rbegin(); it != order.rend(); ++it)
       if (auto t = tiles_.find(it->second); t != tiles_.end()) lru_.splice(lru_.begin(), lru_, t->second.lru);
     std::deque<int> fresh;
+    std::unordered_set<int> in_fresh;
     for (const auto& [d, k] : order)
-      if (!tiles_.count(k) && !loading_.count(k)) fresh.push_back(k);
+      if (!tiles_.count(k) && !loading_.count(k) && in_fresh.insert(k).second) fresh.push_back(k);
+    if (fresh.empty()) return;  // all resident or on their way: the queue stays as it is
     // The newest request first; older queued tiles after it, while they fit.
     for (int k : queue_)
-      if (fresh.size() < fit && std::find(fresh.begin(), fresh.end(), k) == fresh.end()) fresh.push_back(k);
+      if (fresh.size() < fit && in_fresh.insert(k).second) fresh.push_back(k);
     queue_.swap(fresh);
   }
   changed_.notify_all();
