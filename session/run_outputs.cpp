@@ -112,6 +112,9 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         {"pyramid_mb", double(hf.paged->pyramid->memory_bytes()) / (1 << 20)},
         {"frames_waited_on_io", frames_waited_on_io_},
         {"page_waits", page_waits_},
+        // All page waits since the load, also outside frames (the first
+        // window before frame 0, host queries between frames).
+        {"page_waits_total", st.misses},
         {"page_ins", page_ins_},
         {"page_ins_per_s", wall_s > 0 ? double(page_ins_) / wall_s : 0.0},
         {"evictions", st.evictions},
