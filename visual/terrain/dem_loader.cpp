@@ -7,6 +7,7 @@
 #include "terrain/gdal_support.h"
 #include "terrain/gdal_tile_reader.h"
 #include "terrain/paged_dem_loader.h"
+#include "terrain/paged_heights.h"
 #include "terrain/void_fill.h"
 
 #include <gdal.h>
@@ -420,12 +421,18 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
   if (ec) throw DemError(path, "cannot access: " + ec.message());
   if (st.type() == fs::file_type::directory) {
     if (enc != "auto" && enc != "gdal") throw DemError(path, "a folder of tiles is read through GDAL, not as " + enc);
-    const DemMosaic mosaic(path);
+    const auto mosaic_ptr = std::make_shared<const DemMosaic>(path);
+    const DemMosaic& mosaic = *mosaic_ptr;
     Heightfield hf;
     try {
       hf = load_with_gdal(mosaic.vrt_path(), opts, false);
     } catch (const DemError& e) {
       throw DemError(path, "mosaic of " + std::to_string(mosaic.tile_count()) + " tiles: " + e.reason());
+    }
+    if (hf.paged) {  // tiles are read from the mosaic's in-memory VRTs after the load
+      auto paged = std::make_shared<PagedHeights>(*hf.paged);
+      paged->source_keep_alive = mosaic_ptr;
+      hf.paged = std::move(paged);
     }
     hf.source = path;
     hf.source_tiles = mosaic.tile_count();

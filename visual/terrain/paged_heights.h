@@ -19,6 +19,9 @@ struct PagedHeights {
   std::shared_ptr<const Heightfield> overview;
   int overview_step = 1;
   std::shared_ptr<const HeightPyramid> pyramid;
+  // What the source needs while tiles are read (a folder's in-memory mosaic
+  // VRTs, terrain/dem_mosaic.h); empty for a file.
+  std::shared_ptr<const void> source_keep_alive;
 };
 
 }  // namespace ig::terrain
