@@ -27,10 +27,10 @@ constexpr int kSide = 1025;
 
 // Rough relief with isolated voids whose neighbourhoods lie inside one
 // 64^2 tile (so the per-tile fill equals the whole-array fill).
-std::string write_dem(const fs::path& dir) {
+std::string write_dem(const fs::path& dir, int w = kSide, int h = kSide) {
   GDALAllRegister();
-  const std::string path = (dir / "paged.tif").string();
-  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), kSide, kSide, 1, GDT_Float32, nullptr);
+  const std::string path = (dir / ("paged_" + std::to_string(w) + "x" + std::to_string(h) + ".tif")).string();
+  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), w, h, 1, GDT_Float32, nullptr);
   EXPECT_NE(ds, nullptr);
   double gt[6] = {-119.0, 1.0 / 1200, 0.0, 37.5, 0.0, -1.0 / 1200};
   GDALSetGeoTransform(ds, gt);
@@ -43,15 +43,16 @@ std::string write_dem(const fs::path& dir) {
   OSRDestroySpatialReference(srs);
   GDALRasterBandH band = GDALGetRasterBand(ds, 1);
   GDALSetRasterNoDataValue(band, -9999.0);
-  std::vector<float> v(std::size_t(kSide) * kSide);
+  std::vector<float> v(std::size_t(w) * h);
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> noise(-15.f, 15.f);
-  for (int r = 0; r < kSide; ++r)
-    for (int c = 0; c < kSide; ++c)
-      v[std::size_t(r) * kSide + c] =
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      v[std::size_t(r) * w + c] =
           float(1200.0 + 900.0 * std::sin(c * 0.011) * std::cos(r * 0.017) + 0.2 * c) + noise(rng);
-  for (auto [c, r] : {std::pair{100, 100}, {300, 517}, {700, 900}}) v[std::size_t(r) * kSide + c] = -9999.f;
-  EXPECT_EQ(GDALRasterIO(band, GF_Write, 0, 0, kSide, kSide, v.data(), kSide, kSide, GDT_Float32, 0, 0), CE_None);
+  for (auto [c, r] : {std::pair{100, 100}, {300, 517}, {700, 900}})
+    if (c < w && r < h) v[std::size_t(r) * w + c] = -9999.f;
+  EXPECT_EQ(GDALRasterIO(band, GF_Write, 0, 0, w, h, v.data(), w, h, GDT_Float32, 0, 0), CE_None);
   GDALClose(ds);
   return path;
 }
@@ -156,6 +157,33 @@ TEST_F(PagedDem, RayCastsAndHostQueriesGiveTheSameAnswers) {
     EXPECT_EQ(w.sample_surface(o.x, o.y), p.sample_surface(o.x, o.y));
   }
   EXPECT_GT(hits, 100);
+}
+
+TEST_F(PagedDem, RaggedSizesGiveTheSamePyramidAndOverview) {
+  // Odd level sizes and partial edge tiles in both directions (1001 x 701
+  // samples: 1000 and 700 cells, levels 500 x 350, 250 x 175, 125 x 88, ...),
+  // and 1000 x 701 (odd cells in x).
+  for (const auto [w, h] : {std::pair{1001, 701}, {1000, 701}}) {
+    const std::string path = write_dem(dir_, w, h);
+    const Heightfield whole = load_dem(path);
+    DemLoadOptions o;
+    o.memory_budget_mb = 1;
+    o.page_tile = 48;
+    const Heightfield paged = load_dem(path, o);
+    ASSERT_TRUE(paged.paged);
+    EXPECT_EQ(paged.mean_m, whole.mean_m);
+    for (int j = 0; j < h; j += 3)
+      for (int i = 0; i < w; ++i) ASSERT_EQ(paged.at(i, j), whole.at(i, j)) << i << "," << j;
+    EXPECT_EQ(paged.paged->overview->heights, decimate_heightfield(whole, paged.paged->overview_step).heights);
+    const HeightPyramid pw(whole), pp(paged);
+    ASSERT_EQ(pp.num_levels(), pw.num_levels());
+    for (int l = 1; l < pw.num_levels(); ++l)
+      for (int j = 0; j < pw.level_height(l); ++j)
+        for (int i = 0; i < pw.level_width(l); ++i) {
+          ASSERT_EQ(pp.node(l, i, j).lo, pw.node(l, i, j).lo) << w << "x" << h << " " << l << ":" << i << "," << j;
+          ASSERT_EQ(pp.node(l, i, j).hi, pw.node(l, i, j).hi) << w << "x" << h << " " << l << ":" << i << "," << j;
+        }
+  }
 }
 
 TEST_F(PagedDem, DemsWithinTheBudgetAreNotPaged) {
