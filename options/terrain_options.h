@@ -22,6 +22,12 @@ struct DemLoadOptions {
   // Overrides the sample spacing (both axes, metres) for any format. Images
   // need it to have real-world spacing; they default to 1 m.
   std::optional<double> spacing_m;
+  // Memory budget for the heights (terrain.memory_budget_mb): a GDAL DEM
+  // whose float heights exceed it is paged from the file in tiles of
+  // page_tile samples a side into a cache of at most this size
+  // (terrain/paged_heights.h, docs/terrain-data.md "Paged heights").
+  int memory_budget_mb = 2048;
+  int page_tile = 256;
 };
 
 // The fractal terrain generator (terrain.generator).

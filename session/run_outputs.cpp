@@ -1,10 +1,12 @@
 #include "session/run_outputs.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
 #include "capture/png_writer.h"
 #include "session/frametime_plot.h"
+#include "terrain/paged_heights.h"
 
 namespace ig::session {
 namespace {
@@ -54,6 +56,9 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
     log_.add_row(row);
   }
   ++rendered_;
+  if (f.page_waits > 0) ++frames_waited_on_io_;
+  page_waits_ += std::max(f.page_waits, 0LL);
+  page_ins_ += f.page_ins;
   if (progress_) {
     const double elapsed = ms_since(start_) / 1000.0;
     if (total_frames > 0)
@@ -95,6 +100,26 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
       {"frame_time", stats::frame_time_summary(log_.frame_ms(), r.frame_budget_ms)},
       {"captures", captured_},
   };
+  if (hf.paged) {  // issue 16: paged heights
+    const auto st = hf.paged->cache->stats();
+    double wall_s = 0.0;
+    for (double ms : log_.frame_ms()) wall_s += ms / 1000.0;
+    summary["paging"] = {
+        {"budget_mb", double(hf.paged->cache->budget_bytes()) / (1 << 20)},
+        {"tile_samples", hf.paged->cache->tile_size()},
+        {"resident_mb", double(st.resident_bytes) / (1 << 20)},
+        {"peak_resident_mb", double(st.peak_resident_bytes) / (1 << 20)},
+        {"pyramid_mb", double(hf.paged->pyramid->memory_bytes()) / (1 << 20)},
+        {"frames_waited_on_io", frames_waited_on_io_},
+        {"page_waits", page_waits_},
+        // All page waits since the load, also outside frames (the first
+        // window before frame 0, host queries between frames).
+        {"page_waits_total", st.misses},
+        {"page_ins", page_ins_},
+        {"page_ins_per_s", wall_s > 0 ? double(page_ins_) / wall_s : 0.0},
+        {"evictions", st.evictions},
+    };
+  }
   for (auto it = extra.begin(); extra.is_object() && it != extra.end(); ++it) summary[it.key()] = it.value();
   std::ofstream((dir_ / "summary.json").string()) << summary.dump(2) << "\n";
   const bool plotted = plot_frame_times(log_.path(), (dir_ / "frametime.png").string(),

@@ -38,6 +38,8 @@ class RunOutputs {
   std::vector<std::string> captured_;
   int rendered_ = 0;
   std::chrono::steady_clock::time_point start_;
+  // Paged heights (issue 16): frames that waited on a tile, tiles loaded.
+  long long frames_waited_on_io_ = 0, page_waits_ = 0, page_ins_ = 0;
 };
 
 }  // namespace ig::session

@@ -7,6 +7,8 @@
 #include "lod/level0_budget.h"
 #include "render/twolevel_method.h"
 #include "session/scene_setup.h"
+#include "terrain/paged_heights.h"
+#include "terrain/ray_cast.h"
 
 namespace ig::session {
 namespace {
@@ -58,6 +60,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
     v.renderer = std::make_unique<render::FrameRenderer>(*scene_, *v.method, options_.shader_dir);
     channels_.push_back(std::move(v));
   }
+  prefetch_first_window();
 }
 
 io::Pose ScenarioRunner::pose_at(double t_s) const { return path_->sample(t_s); }
@@ -88,13 +91,52 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   f.sim_time_s = sim_time_s;
   f.pose = pose;
   f.pose_ms = pose_ms;
+  const terrain::HeightTileCache* pages = heightfield_.paged ? heightfield_.paged->cache.get() : nullptr;
+  const auto before = pages ? pages->stats() : terrain::HeightTileCache::Stats{};
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
     ch.last = ch.renderer->render(ch.camera, *ch.target);
     ch.render_ms = ms_since(t0);
   }
+  if (pages) {
+    const auto after = pages->stats();
+    f.page_waits = after.misses - before.misses;
+    f.page_ins = after.prefetched - before.prefetched;
+  }
   return f;
+}
+
+void ScenarioRunner::prefetch_first_window() {
+  const render::HeightWindowTexture* window = scene_->height_window();
+  if (!heightfield_.paged || !window) return;
+  // The window around the first pose, loaded before the first frame (it is
+  // part of the load-to-first-frame time, not a frame's wait).
+  const io::Pose pose = pose_at(0.0);
+  const glm::dvec3 p = pose.position - scene_->world_origin();
+  window->prefetch_around(glm::ivec2(int(p.x / heightfield_.spacing_x_m), int(p.y / heightfield_.spacing_y_m)));
+  // And the tiles under the views (the two-level method's coverage rays: 12 x 9 a view).
+  const auto& r = scenario_.render;
+  for (const auto& ch : channels_) {
+    const render::Camera cam = scene_->local_camera(camera_for(pose, ch));
+    std::vector<glm::dvec3> hits;
+    for (int y = 0; y < 9; ++y)
+      for (int x = 0; x < 12; ++x)
+        if (const auto hit = terrain::cast_ray(heightfield_, scene_->height_pyramid(), cam.position,
+                                               cam.pixel_ray((x + 0.5) * r.width / 12, (y + 0.5) * r.height / 9,
+                                                             r.width, r.height),
+                                               cam.far_m))
+          hits.push_back(hit->point);
+    scene_->prefetch_heights(hits);
+    // Level1 and its band around the look-at point (the centre ray): up to
+    // a 4097-sample square.
+    if (const auto e = terrain::cast_ray(heightfield_, scene_->height_pyramid(), cam.position,
+                                         cam.pixel_ray(0.5 * r.width, 0.5 * r.height, r.width, r.height), cam.far_m)) {
+      const glm::ivec2 c(int(e->point.x / heightfield_.spacing_x_m), int(e->point.y / heightfield_.spacing_y_m));
+      scene_->prefetch_samples(c - 2048, c + 2048);
+    }
+  }
+  heightfield_.paged->cache->wait_idle();
 }
 
 std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& ch, double readback_ms,
@@ -121,6 +163,10 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
       {"pitch_deg", hpr.pitch_deg},
       {"roll_deg", hpr.roll_deg},
   };
+  if (f.page_waits >= 0) {  // paged heights (issue 16)
+    row.emplace_back("page_waits", f.page_waits);
+    row.emplace_back("page_ins", f.page_ins);
+  }
   for (const auto& [name, value] : m.columns) row.emplace_back(name, value);
   append_work_columns(row, ch.last, /*per_pass=*/true);
   return row;

@@ -48,6 +48,11 @@ struct FrameResult {
   double sim_time_s = 0.0;
   io::Pose pose;
   double pose_ms = 0.0;
+  // Paged heights only (issue 16; -1 otherwise): tiles this frame had to
+  // wait for (synchronous page-ins: height window, ray casts, queries) and
+  // tiles the background thread loaded during it.
+  long long page_waits = -1;
+  long long page_ins = 0;
 };
 
 // The frame's work counters as log columns: totals (vs_invocations,
@@ -83,6 +88,10 @@ class ScenarioRunner {
   // Renders frame k at sim_time_s with a pose from elsewhere (live intake,
   // a recording); pose_ms is what obtaining it cost.
   FrameResult render_pose(int k, double sim_time_s, const io::Pose& pose, double pose_ms = 0.0);
+  // Paged heights with a height window: loads the window around the first
+  // pose (the constructor calls it; a front end that places the first pose
+  // itself may call it again).
+  void prefetch_first_window();
   // Pose at simulation time t (terrain-local, metres above sea level).
   io::Pose pose_at(double t_s) const;
   void present();

@@ -46,12 +46,16 @@ if(CMAKE_SCRIPT_MODE_FILE)
       expect("${k}" "${tiles_${k}}" "${file_${k}}")
     endforeach()
     expect("tiles" "${tiles_tiles}" 4)
-    foreach(src file tiles)
-      set(terrain "${DEM}")
+    # tiles_paged: the folder with its heights paged (a 48 MB budget, under
+    # the 4097^2 floats): read through the mosaic's in-memory VRTs after the load.
+    foreach(src file tiles tiles_paged)
+      set(terrain "${DEM}\"")
       if(src STREQUAL "tiles")
-        set(terrain "${OUT}/tiles")
+        set(terrain "${OUT}/tiles\"")
+      elseif(src STREQUAL "tiles_paged")
+        set(terrain "${OUT}/tiles\", \"memory_budget_mb\": 48")
       endif()
-      file(WRITE "${OUT}/${src}.json" "{\"name\": \"tiles_${src}\", \"terrain\": {\"file\": \"${terrain}\"},
+      file(WRITE "${OUT}/${src}.json" "{\"name\": \"tiles_${src}\", \"terrain\": {\"file\": \"${terrain}},
   \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
   \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
     {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
@@ -62,6 +66,8 @@ if(CMAKE_SCRIPT_MODE_FILE)
     file(SHA256 "${OUT}/run_file/final.png" a)
     file(SHA256 "${OUT}/run_tiles/final.png" b)
     expect("final.png of the tiles against the file" "${b}" "${a}")
+    file(SHA256 "${OUT}/run_tiles_paged/final.png" c)
+    expect("final.png of the tiles, paged, against the file" "${c}" "${a}")
   elseif(CASE STREQUAL "missing")
     # Tile 1 (north-east, 2049 x 2048 samples) left out: nodata, filled and counted.
     run_ok("${CUT}" "${DEM}" "${OUT}/tiles" 2 2 --skip 1)

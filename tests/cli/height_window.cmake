@@ -6,7 +6,13 @@
 #  * overview: with the texture limit lowered below the DEM
 #    (terrain.texture_limit 2049: an overview every 2nd sample, Level0 built
 #    on it, full resolution in a 512-sample window) ig run renders, and a
-#    baseline method is refused with a message naming it and the limit.
+#    baseline method is refused with a message naming it and the limit;
+#  * paged / paged_overview: with terrain.memory_budget_mb 16 the heights
+#    (64 MB) are paged from the file by the tile cache (terrain/paged_heights.h)
+#    and the picture is byte-identical to the whole-array run's, with a
+#    256-sample window (paged) and beyond a texture limit of 2049
+#    (paged_overview); frames.csv has page_waits / page_ins and
+#    summary.json a "paging" block.
 # Two roles, like dem_tiles.cmake:
 #  * included by tests/CMakeLists.txt: registers cli.height_window.* (skip without IG_DEM_DIR);
 #  * run as `cmake -P height_window.cmake -DIG=... -DOUT=... -DCASE=...`.
@@ -37,6 +43,53 @@ if(CMAKE_SCRIPT_MODE_FILE)
     message("ig run --method roam: exit ${rc}: ${err}")
     if(rc EQUAL 0 OR NOT err MATCHES "method 'roam' cannot draw .*4097x4097.*texture limit is 2049")
       message(FATAL_ERROR "roam beyond the texture limit must be refused naming the method and the limit")
+    endif()
+    return()
+  endif()
+  if(CASE MATCHES "^paged")
+    set(extra "")
+    if(CASE STREQUAL "paged_overview")
+      set(extra "\"texture_limit\": 2049, ")
+    endif()
+    foreach(budget 2048 16)
+      file(WRITE "${OUT}/b${budget}.json" "{\"name\": \"budget_${budget}\",
+  \"terrain\": {\"file\": \"${DEM}\", ${extra}\"height_window\": 256, \"memory_budget_mb\": ${budget}},
+  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
+  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
+    {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
+    {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}]},
+  \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
+      execute_process(COMMAND "${IG}" run "${OUT}/b${budget}.json" --out "${OUT}/run_${budget}" --headless --quiet
+        RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+      if(NOT rc EQUAL 0)
+        message(FATAL_ERROR "ig run with memory_budget_mb ${budget}: exit ${rc}\n${out}\n${err}")
+      endif()
+    endforeach()
+    execute_process(COMMAND "${IG}" run "${OUT}/b16.json" --out "${OUT}/run_roam" --headless --quiet --method roam
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message("ig run --method roam on paged heights: exit ${rc}: ${err}")
+    if(rc EQUAL 0 OR NOT err MATCHES "method 'roam' cannot draw .*(paged|texture limit)")
+      message(FATAL_ERROR "roam on paged heights must be refused naming the method and why")
+    endif()
+    file(READ "${OUT}/run_16/summary.json" summary)
+    string(JSON waited GET "${summary}" paging frames_waited_on_io)
+    string(JSON peak GET "${summary}" paging peak_resident_mb)
+    message("paged: frames waited on I/O ${waited}, peak resident ${peak} MB")
+    if(peak GREATER 16)
+      message(FATAL_ERROR "the tile cache held ${peak} MB, over its 16 MB budget")
+    endif()
+    file(STRINGS "${OUT}/run_16/frames.csv" header LIMIT_COUNT 1)
+    if(NOT header MATCHES "page_waits,page_ins")
+      message(FATAL_ERROR "frames.csv of a paged run has no page_waits / page_ins columns: ${header}")
+    endif()
+    file(STRINGS "${OUT}/run_2048/frames.csv" header LIMIT_COUNT 1)
+    if(header MATCHES "page_waits")
+      message(FATAL_ERROR "frames.csv of a DEM within the budget has paging columns")
+    endif()
+    file(SHA256 "${OUT}/run_2048/final.png" a)
+    file(SHA256 "${OUT}/run_16/final.png" b)
+    if(NOT a STREQUAL b)
+      message(FATAL_ERROR "final.png with paged heights differs from the whole-array run's")
     endif()
     return()
   endif()
@@ -85,7 +138,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
   return()
 endif()
 
-foreach(case same_picture overview)
+foreach(case same_picture overview paged paged_overview)
   add_test(NAME cli.height_window.${case}
     COMMAND ${CMAKE_COMMAND} -DIG=$<TARGET_FILE:ig> -DOUT=${CMAKE_BINARY_DIR}/test-out/height_window_${case}
       -DCASE=${case} -P ${CMAKE_CURRENT_LIST_FILE})

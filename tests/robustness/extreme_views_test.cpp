@@ -379,7 +379,7 @@ TEST_F(ExtremeViews, FourKilometreCliffBetweenNeighbouringSamples) {
     SCOPED_TRACE(method);
     Heightfield hf = robustness::grid(129, 129, 30.0, "cliff");
     for (int j = 0; j < hf.height; ++j)
-      for (int i = 0; i < hf.width; ++i) hf.at(i, j) = i < 64 ? 0.0f : 4000.0f;
+      for (int i = 0; i < hf.width; ++i) hf.ref(i, j) = i < 64 ? 0.0f : 4000.0f;
     hf.finalize_stats();
     // In the low west half, 500 m up, looking east at the cliff face 900 m away.
     const glm::dvec3 eye(1000.0, 1920.0, 500.0);

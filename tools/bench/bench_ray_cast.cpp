@@ -76,7 +76,7 @@ Heightfield make_terrain(int n, double spacing) {
         amp *= 0.5;
         freq *= 2;
       }
-      hf.at(i, j) = float(std::max(0.0, h + 900));
+      hf.ref(i, j) = float(std::max(0.0, h + 900));
     }
   hf.finalize_stats();
   return hf;

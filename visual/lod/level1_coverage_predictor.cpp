@@ -24,6 +24,7 @@ CoveragePrediction predict_level1_coverage(const terrain::Heightfield& hf, const
     const auto hit = terrain::cast_ray(hf, pyramid, eye, dir, max_t);
     if (!hit) continue;
     ++p.terrain_hits;
+    p.hits.push_back(hit->point);
     const double si = hit->point.x / hf.spacing_x_m, sj = hit->point.y / hf.spacing_y_m;
     for (size_t k = 0; k < ladder.size(); ++k) {
       const glm::ivec2 o = origins[k];

@@ -22,6 +22,7 @@ namespace ig::lod {
 struct CoveragePrediction {
   std::vector<double> ratio;  // per ladder size; empty when no ray hit the terrain
   int rays = 0, terrain_hits = 0;
+  std::vector<glm::dvec3> hits;  // where the rays met the terrain (paged heights prefetch around them)
 };
 
 // Where the N x N Level1 square starts when centred on sample e (as the

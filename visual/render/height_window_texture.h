@@ -6,11 +6,15 @@
 // texel coordinate (s + 0.5) / size while s is inside the window, with
 // linear filtering correct across the wrap seam. Moving the window uploads
 // only the rows and columns that scrolled in (glTextureSubImage2D straight
-// from the heightfield's rows, no staging copy).
+// from the heightfield's rows, no staging copy; for paged heights, copied
+// out of the tile cache, whose background thread is asked every move for the
+// window and one tile around it, so the rows that scroll in are resident).
 
 #include <epoxy/gl.h>
 
 #include <glm/vec2.hpp>
+
+#include <vector>
 
 #include "gl/gl_objects.h"
 #include "terrain/heightfield.h"
@@ -28,6 +32,9 @@ class HeightWindowTexture {
   // DEM) and uploads what scrolled in; returns the samples uploaded (0 when
   // it did not move).
   long long centre_on(glm::ivec2 centre);
+  // Paged heights: asks the tile cache's background thread for the window
+  // centred on `centre` and one tile around it (centre_on does it too).
+  void prefetch_around(glm::ivec2 centre) const;
 
   GLuint id() const { return tex_.id(); }
   bool placed() const { return window_.placed(); }  // centred at least once
@@ -40,6 +47,7 @@ class HeightWindowTexture {
   terrain::ToroidalWindow window_;
   gl::Texture tex_;
   long long uploaded_ = 0;
+  std::vector<float> staging_;  // paged heights: one rectangle out of the tile cache
 };
 
 }  // namespace ig::render

@@ -34,6 +34,12 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, const Terrai
                                 "x" + std::to_string(hf.height) + "): it needs the whole DEM in one texture and the GL "
                                 "height-texture limit is " + std::to_string(scene.texture_limit()) + "; use the twolevel method");
   }
+  if (scene.heightfield().paged && name != "twolevel") {  // issue 16: over the memory budget
+    const auto& hf = scene.heightfield();
+    throw std::invalid_argument("method '" + name + "' cannot draw " + hf.source + " (" + std::to_string(hf.width) +
+                                "x" + std::to_string(hf.height) + "): its heights are paged (over "
+                                "terrain.memory_budget_mb) and the method needs them whole; use the twolevel method");
+  }
   if (name == "reference") return std::make_unique<ReferenceMethod>(scene, shader_dir);
   if (name == "twolevel") {
     TwoLevelOptions o = twolevel;

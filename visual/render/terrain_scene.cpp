@@ -8,13 +8,14 @@
 #include "gl/gl_context.h"
 #include "terrain/heightfield_overview.h"
 #include "terrain/imagery_loader.h"
+#include "terrain/paged_heights.h"
 
 namespace ig::render {
 
 TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& shading,
                            const std::optional<std::string>& imagery_path, int texture_limit)
     : heightfield_(hf), shading_(shading) {
-  if (hf.width < 2 || hf.height < 2 || hf.heights.size() != size_t(hf.width) * size_t(hf.height))
+  if (hf.width < 2 || hf.height < 2 || !hf.has_samples())
     throw std::invalid_argument(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
                                 " samples: a terrain needs at least 2 x 2 samples to form a surface");
   GLint max_size = 0;
@@ -24,10 +25,14 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   const auto t0 = std::chrono::steady_clock::now();
   const int limit = texture_limit > 0 ? std::min(texture_limit, int(max_size)) : int(max_size);
   texture_limit_ = limit;
-  if (hf.width > limit || hf.height > limit) {
-    // Beyond one texture: an overview for the whole DEM, full resolution in a window.
+  if (hf.width > limit || hf.height > limit || hf.paged) {
+    // Beyond one texture (or the memory budget: paged heights): an overview
+    // for the whole DEM, full resolution in a window.
     overview_step_ = terrain::overview_step_for(hf.width, hf.height, std::min(kOverviewSide, limit));
-    overview_ = std::make_unique<terrain::Heightfield>(terrain::decimate_heightfield(hf, overview_step_));
+    if (hf.paged && hf.paged->overview_step == overview_step_)
+      overview_ = std::make_unique<terrain::Heightfield>(*hf.paged->overview);  // built at load
+    else
+      overview_ = std::make_unique<terrain::Heightfield>(terrain::decimate_heightfield(hf, overview_step_));
     height_window_ = std::make_unique<HeightWindowTexture>(hf, std::min(kDefaultHeightWindow, limit));
   }
   const terrain::Heightfield& tex = texture_heightfield();
@@ -111,6 +116,23 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
 void TerrainScene::enable_height_window(int size) {
   if (size <= 0 && overview_) size = height_window_ ? height_window_->size().x : kDefaultHeightWindow;
   height_window_ = size > 0 ? std::make_unique<HeightWindowTexture>(heightfield_, size) : nullptr;
+}
+
+void TerrainScene::prefetch_heights(const std::vector<glm::dvec3>& points_m) const {
+  if (!heightfield_.paged) return;
+  const terrain::HeightTileCache& cache = *heightfield_.paged->cache;
+  const int half = cache.tile_size() / 2;
+  for (const glm::dvec3& p : points_m) {
+    const int i = int(p.x / heightfield_.spacing_x_m), j = int(p.y / heightfield_.spacing_y_m);
+    cache.request(i - half, j - half, 2 * half + 1, 2 * half + 1);
+  }
+}
+
+void TerrainScene::prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) const {
+  if (!heightfield_.paged) return;
+  const terrain::HeightTileCache& cache = *heightfield_.paged->cache;
+  const int t = cache.tile_size();
+  cache.request(lo.x - t, lo.y - t, hi.x - lo.x + 1 + 2 * t, hi.y - lo.y + 1 + 2 * t);
 }
 
 long long TerrainScene::follow_window(glm::ivec2 centre) const {

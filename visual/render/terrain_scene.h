@@ -23,6 +23,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -96,6 +97,13 @@ class TerrainScene {
   // const: the window is a cache of heights the scene already serves.
   long long follow_window(glm::ivec2 centre) const;
   const HeightWindowTexture* height_window() const { return height_window_.get(); }
+  // Paged heights (terrain/paged_heights.h): asks the tile cache's background
+  // thread for the tiles within half a tile of each point (terrain-local
+  // metres), e.g. where the view rays hit, so next frame's ray casts find
+  // them resident. Nothing for heights held whole.
+  void prefetch_heights(const std::vector<glm::dvec3>& points_m) const;
+  // The same for samples [lo, hi] (inclusive) and one tile around them.
+  void prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) const;
 
   // World position of sample (0, 0) at height 0 (default: the origin).
   const glm::dvec3& world_origin() const { return world_origin_; }

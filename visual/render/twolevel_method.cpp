@@ -230,6 +230,7 @@ void TwoLevelMethod::update(const Camera& camera) {
                                                     viewport_.x, viewport_.y));
     const auto p = lod::predict_level1_coverage(hf, pyramid_, camera.position, prediction_rays_, camera.far_m,
                                                 {ec_i, ec_j}, controller_.ladder());
+    scene_.prefetch_heights(p.hits);  // paged heights: keep the tiles under the view resident
 
     n = controller_.update(ratio, p.ratio);
   } else {
@@ -246,6 +247,9 @@ void TwoLevelMethod::update(const Camera& camera) {
   scene_.follow_window(origin_ + (n - 1) / 2);  // the height window, if any, on Level1 (terrain_scene.h)
   band_w_ = lod::band_width_samples(level0_resolution_, options_.alpha, n, options_.band_stride);
 
+  // Paged heights: Level1's square and band (their bounds read the finest
+  // pyramid levels along the edges) for the background thread.
+  scene_.prefetch_samples(origin_ - band_w_, origin_ + (n - 1) + band_w_);
   visible_blocks_.clear();
   level0_hidden_clusters_ = level1_hidden_blocks_ = 0;
   if (!terrain_visible_) {

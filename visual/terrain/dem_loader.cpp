@@ -5,6 +5,10 @@
 #include "terrain/dem_loader.h"
 #include "terrain/dem_mosaic.h"
 #include "terrain/gdal_support.h"
+#include "terrain/gdal_tile_reader.h"
+#include "terrain/paged_dem_loader.h"
+#include "terrain/paged_heights.h"
+#include "terrain/void_fill.h"
 
 #include <gdal.h>
 #include <cpl_conv.h>
@@ -55,80 +59,14 @@ std::string size_text(std::int64_t w, std::int64_t h) {
   return std::to_string(w) + "x" + std::to_string(h);
 }
 
-void check_size(const std::string& path, std::int64_t w, std::int64_t h) {
+// paged: the heights are paged (issue 16), so only the side limit applies.
+void check_size(const std::string& path, std::int64_t w, std::int64_t h, bool paged = false) {
   if (w < 2 || h < 2)
     throw DemError(path, "raster size " + size_text(w, h) +
                              " is too small (a DEM needs at least 2x2 samples)");
-  if (w > kMaxSide || h > kMaxSide || w * h > kMaxSamples)
+  if (w > kMaxSide || h > kMaxSide || (w * h > kMaxSamples && !paged))
     throw DemError(path, "raster size " + size_text(w, h) +
                              " is too large (limit 65537 per side and 2^30 samples)");
-}
-
-// ---------------------------------------------------------------- voids ---
-
-// Fills void samples (valid[k] == 0) inward from the edges of each void,
-// one layer at a time: every void sample with at least one valid 8-neighbour
-// takes the mean of those neighbours, then they all count as valid for the
-// next layer. Deterministic and O(samples). Returns the number filled.
-std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state, int w,
-                        int ht) {
-  // state: 0 void, 1 valid, 2 void already queued.
-  std::int64_t voids = 0;
-  for (std::uint8_t s : state) voids += (s == 0);
-  if (voids == 0) return 0;
-
-  auto for_neighbours = [&](std::uint32_t k, auto&& fn) {
-    const int i = int(k % std::uint32_t(w)), j = int(k / std::uint32_t(w));
-    for (int dj = -1; dj <= 1; ++dj) {
-      const int jj = j + dj;
-      if (jj < 0 || jj >= ht) continue;
-      for (int di = -1; di <= 1; ++di) {
-        const int ii = i + di;
-        if ((di == 0 && dj == 0) || ii < 0 || ii >= w) continue;
-        fn(std::uint32_t(jj) * std::uint32_t(w) + std::uint32_t(ii));
-      }
-    }
-  };
-
-  std::vector<std::uint32_t> frontier, next;
-  for (std::uint32_t k = 0; k < state.size(); ++k) {
-    if (state[k] != 0) continue;
-    bool near_valid = false;
-    for_neighbours(k, [&](std::uint32_t n) { near_valid |= (state[n] == 1); });
-    if (near_valid) {
-      state[k] = 2;
-      frontier.push_back(k);
-    }
-  }
-  std::vector<float> values;
-  while (!frontier.empty()) {
-    values.resize(frontier.size());
-    for (std::size_t f = 0; f < frontier.size(); ++f) {
-      double sum = 0.0;
-      int count = 0;
-      for_neighbours(frontier[f], [&](std::uint32_t n) {
-        if (state[n] == 1) {
-          sum += h[n];
-          ++count;
-        }
-      });
-      values[f] = float(sum / std::max(count, 1));
-    }
-    next.clear();
-    for (std::size_t f = 0; f < frontier.size(); ++f) {
-      h[frontier[f]] = values[f];
-      state[frontier[f]] = 1;
-    }
-    for (std::uint32_t k : frontier)
-      for_neighbours(k, [&](std::uint32_t n) {
-        if (state[n] == 0) {
-          state[n] = 2;
-          next.push_back(n);
-        }
-      });
-    frontier.swap(next);
-  }
-  return voids;
 }
 
 void flip_rows(std::vector<float>& h, int w, int ht) {
@@ -188,6 +126,51 @@ std::string crs_short_name(OGRSpatialReferenceH srs) {
   return n ? std::string(n) : std::string();
 }
 
+// The heights read whole (they fit the memory budget): one RasterIO, flip,
+// decode, void fill over the whole grid.
+void read_whole_heights(Heightfield& hf, GDALRasterBandH band, const std::string& path, int w, int ht,
+                        const SampleDecoding& dec) {
+  hf.width = w;
+  hf.height = ht;
+  hf.source = path;
+  const std::size_t n = std::size_t(w) * std::size_t(ht);
+  try {
+    hf.heights.resize(n);
+  } catch (const std::bad_alloc&) {
+    throw DemError(path, "out of memory for a " + size_text(w, ht) + " grid");
+  }
+
+  CPLErrorReset();
+  const CPLErr err = GDALRasterIO(band, GF_Read, 0, 0, w, ht, hf.heights.data(), w, ht,
+                                  GDT_Float32, 0, 0);
+  if (err != CE_None) {
+    const std::string msg = without_path(gdal::last_error(), path);
+    throw DemError(path, "read failed (truncated or corrupt file?)" +
+                             (msg.empty() ? std::string() : ": " + msg));
+  }
+  flip_rows(hf.heights, w, ht);
+
+  const auto is_valid = [&](float v) { return dec.valid(v); };
+  std::size_t valid = 0;
+  for (std::size_t k = 0; k < n; ++k) valid += is_valid(hf.heights[k]);
+  if (valid == 0)
+    throw DemError(path, "all " + std::to_string(n) + " samples are nodata");
+  // The void mask (a byte per sample, 420 MB for 20481^2) only when there
+  // are voids, so a void-free DEM's load peaks at its heights (issue 16).
+  std::vector<std::uint8_t> state;
+  if (valid < n) {
+    state.resize(n);
+    for (std::size_t k = 0; k < n; ++k) state[k] = is_valid(hf.heights[k]);
+  }
+
+  // Band scale/offset and vertical units (feet) to metres, valid samples only.
+  if (dec.scale != 1.0 || dec.offset != 0.0 || dec.unit_m != 1.0) {
+    for (std::size_t k = 0; k < n; ++k)
+      if (state.empty() || state[k]) hf.heights[k] = float((hf.heights[k] * dec.scale + dec.offset) * dec.unit_m);
+  }
+  hf.nodata_count = state.empty() ? 0 : fill_voids(hf.heights, state, w, ht);
+}
+
 Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
                            bool is_hgt) {
   gdal::register_once();
@@ -213,64 +196,42 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
     throw DemError(path, "has " + std::to_string(bands) +
                              " raster bands; a DEM must have exactly one");
   const std::int64_t w64 = GDALGetRasterXSize(h), h64 = GDALGetRasterYSize(h);
-  check_size(path, w64, h64);
+  // Paged when the float heights exceed the memory budget (issue 16).
+  const std::size_t budget = std::size_t(std::max(opts.memory_budget_mb, 1)) << 20;
+  const bool paged = w64 > 0 && h64 > 0 && std::uint64_t(w64) * std::uint64_t(h64) * sizeof(float) > budget;
+  check_size(path, w64, h64, paged);
   const int w = int(w64), ht = int(h64);
   GDALRasterBandH band = GDALGetRasterBand(h, 1);
   if (GDALDataTypeIsComplex(GDALGetRasterDataType(band)))
     throw DemError(path, "complex-valued raster is not a DEM");
 
-  Heightfield hf;
-  hf.width = w;
-  hf.height = ht;
-  hf.source = path;
-  const std::size_t n = std::size_t(w) * std::size_t(ht);
-  try {
-    hf.heights.resize(n);
-  } catch (const std::bad_alloc&) {
-    throw DemError(path, "out of memory for a " + size_text(w, ht) + " grid");
-  }
-
-  CPLErrorReset();
-  const CPLErr err = GDALRasterIO(band, GF_Read, 0, 0, w, ht, hf.heights.data(), w, ht,
-                                  GDT_Float32, 0, 0);
-  if (err != CE_None) {
-    const std::string msg = without_path(gdal::last_error(), path);
-    throw DemError(path, "read failed (truncated or corrupt file?)" +
-                             (msg.empty() ? std::string() : ": " + msg));
-  }
-  flip_rows(hf.heights, w, ht);
-
-  // Voids: band nodata, non-finite, SRTM void.
+  // How samples decode: voids (band nodata, non-finite, SRTM void), band
+  // scale/offset and vertical units (feet) to metres.
   int has_nodata = 0;
   const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
   const bool nodata_is_nan = has_nodata && std::isnan(nodata);
   const bool nodata_fits = has_nodata && !nodata_is_nan && std::fabs(nodata) <= FLT_MAX;
-  const float nodata_f = nodata_fits ? float(nodata) : kSrtmVoid;
-  const auto is_valid = [&](float v) { return std::isfinite(v) && v != kSrtmVoid && v != nodata_f; };
-  std::size_t valid = 0;
-  for (std::size_t k = 0; k < n; ++k) valid += is_valid(hf.heights[k]);
-  if (valid == 0)
-    throw DemError(path, "all " + std::to_string(n) + " samples are nodata");
-  // The void mask (a byte per sample, 420 MB for 20481^2) only when there
-  // are voids, so a void-free DEM's load peaks at its heights (issue 16).
-  std::vector<std::uint8_t> state;
-  if (valid < n) {
-    state.resize(n);
-    for (std::size_t k = 0; k < n; ++k) state[k] = is_valid(hf.heights[k]);
-  }
-
-  // Band scale/offset and vertical units (feet) to metres, valid samples only.
+  SampleDecoding dec;
+  dec.nodata = nodata_fits ? float(nodata) : kSrtmVoid;
   int has_scale = 0, has_offset = 0;
-  double vscale = GDALGetRasterScale(band, &has_scale);
-  double voffset = GDALGetRasterOffset(band, &has_offset);
-  if (!has_scale) vscale = 1.0;
-  if (!has_offset) voffset = 0.0;
-  const double unit = vertical_unit_to_metres(GDALGetRasterUnitType(band));
-  if (vscale != 1.0 || voffset != 0.0 || unit != 1.0) {
-    for (std::size_t k = 0; k < n; ++k)
-      if (state.empty() || state[k]) hf.heights[k] = float((hf.heights[k] * vscale + voffset) * unit);
+  dec.scale = GDALGetRasterScale(band, &has_scale);
+  dec.offset = GDALGetRasterOffset(band, &has_offset);
+  if (!has_scale) dec.scale = 1.0;
+  if (!has_offset) dec.offset = 0.0;
+  dec.unit_m = vertical_unit_to_metres(GDALGetRasterUnitType(band));
+
+  Heightfield hf;
+  if (paged) {
+    // GDAL's block cache (5 % of RAM by default) would sit beside the tile cache.
+    if (GDALGetCacheMax64() > (GIntBig(256) << 20)) GDALSetCacheMax64(GIntBig(256) << 20);
+    try {
+      hf = load_paged_heights(path, dec, budget, opts.page_tile);
+    } catch (const std::exception& e) {
+      throw DemError(path, without_path(e.what(), path));
+    }
+  } else {
+    read_whole_heights(hf, band, path, w, ht, dec);
   }
-  hf.nodata_count = state.empty() ? 0 : fill_voids(hf.heights, state, w, ht);
 
   // Georeferencing and spacing.
   std::array<double, 6> gt{};
@@ -460,12 +421,18 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
   if (ec) throw DemError(path, "cannot access: " + ec.message());
   if (st.type() == fs::file_type::directory) {
     if (enc != "auto" && enc != "gdal") throw DemError(path, "a folder of tiles is read through GDAL, not as " + enc);
-    const DemMosaic mosaic(path);
+    const auto mosaic_ptr = std::make_shared<const DemMosaic>(path);
+    const DemMosaic& mosaic = *mosaic_ptr;
     Heightfield hf;
     try {
       hf = load_with_gdal(mosaic.vrt_path(), opts, false);
     } catch (const DemError& e) {
       throw DemError(path, "mosaic of " + std::to_string(mosaic.tile_count()) + " tiles: " + e.reason());
+    }
+    if (hf.paged) {  // tiles are read from the mosaic's in-memory VRTs after the load
+      auto paged = std::make_shared<PagedHeights>(*hf.paged);
+      paged->source_keep_alive = mosaic_ptr;
+      hf.paged = std::move(paged);
     }
     hf.source = path;
     hf.source_tiles = mosaic.tile_count();

@@ -31,11 +31,18 @@
 // heightfield must outlive the pyramid and its heights must not be
 // reallocated. It is a snapshot: rebuild it after editing the heights
 // (cast_ray checks the dimensions match but cannot detect edited heights).
+//
+// Paged heightfields (terrain/paged_heights.h): the loader builds the
+// pyramid in its pass over the source (from_level2) and levels 0 and 1 are
+// read through the tile cache. Copies share the stored levels, so
+// HeightPyramid(paged_hf) costs nothing.
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "terrain/height_tile_cache.h"
 #include "terrain/heightfield.h"
 
 namespace ig::terrain {
@@ -55,6 +62,14 @@ class HeightPyramid {
   // heights.size() != width * height. NaN heights are not supported
   // (loaders fill nodata before this point).
   explicit HeightPyramid(const Heightfield& hf);
+  // A pyramid over a width x height grid whose samples are paged: level2 is
+  // the exact min/max of every level-2 node (samples [4i, min(4i + 4, width
+  // - 1)] x [4j, min(4j + 4, height - 1)]), row-major, and root the exact
+  // min/max of all samples. Levels 0 and 1 read through `pages`.
+  static HeightPyramid from_level2(int width, int height, std::shared_ptr<const HeightTileCache> pages,
+                                   const std::vector<MinMax>& level2, MinMax root);
+  // Level-2 nodes a side of a grid of `samples` a side: ceil((samples - 1) / 4).
+  static int level2_side(int samples) { return (samples / 2 + 1) / 2; }
 
   bool empty() const { return levels_.empty(); }
   // Cells (= level-0 nodes) in x and y: width-1 and height-1 of the source.
@@ -77,6 +92,7 @@ class HeightPyramid {
   // (at level 0: the two rows of heights under it).
   void prefetch(int level, int i, int j) const {
 #if defined(__GNUC__) || defined(__clang__)
+    if (level <= 1 && !heights_) return;  // paged: read through the cache
     if (level <= 1) {  // the 2 or 3 rows of heights under it
       const int step = level == 0 ? 1 : 2;
       const float* h = heights_ + static_cast<std::size_t>(j * step) * width_ + i * step;
@@ -84,14 +100,14 @@ class HeightPyramid {
       __builtin_prefetch(h + width_);
       if (level == 1 && j * 2 + 2 < height_) __builtin_prefetch(h + 2 * width_);
     } else {
-      __builtin_prefetch(nodes_.data() + index(levels_[level], i, j));
+      __builtin_prefetch(nodes_ + index(levels_[level], i, j));
     }
 #endif
   }
   // Exact min/max of all heights.
   MinMax root() const { return root_; }
   // Bytes held by the stored levels (levels 0 and 1 are read from the heights).
-  std::size_t memory_bytes() const { return nodes_.size() * sizeof(Quantised); }
+  std::size_t memory_bytes() const { return storage_ ? storage_->size() * sizeof(Quantised) : 0; }
 
  private:
   struct Quantised {
@@ -110,6 +126,7 @@ class HeightPyramid {
     return l.offset + (static_cast<std::size_t>(j >> 1) * l.blocks_x + (i >> 1)) * 4 + ((j & 1) << 1) + (i & 1);
   }
   MinMax cell(int i, int j) const {
+    if (!heights_) return paged_node(i, j, 1);
     const float* r0 = heights_ + static_cast<std::size_t>(j) * width_ + i;
     const float* r1 = r0 + width_;
     const float a = r0[0], b = r0[1], c = r1[0], d = r1[1];
@@ -118,6 +135,7 @@ class HeightPyramid {
   }
   // Level-1 node: samples 2i..2i+2 x 2j..2j+2, fewer at the east / north edge.
   MinMax quad(int i, int j) const {
+    if (!heights_) return paged_node(2 * i, 2 * j, 2);
     const int i0 = 2 * i, j0 = 2 * j;
     const int i1 = i0 + 2 < width_ ? i0 + 2 : width_ - 1, j1 = j0 + 2 < height_ ? j0 + 2 : height_ - 1;
     float lo = heights_[static_cast<std::size_t>(j0) * width_ + i0], hi = lo;
@@ -130,11 +148,18 @@ class HeightPyramid {
     }
     return MinMax{lo, hi};
   }
+  // Min/max of samples [i0, min(i0 + span, width - 1)] x [j0, ...] read through the cache.
+  MinMax paged_node(int i0, int j0, int span) const;
+  void make_levels(int width, int height);  // levels_ and the storage, zeroed
+  template <typename Level2>
+  void encode(const Level2& level2_node);  // levels >= 2 from exact level-2 bounds; root_ set
   float decode(std::uint16_t q) const { return base_ + static_cast<float>(q) * step_; }
 
   std::vector<Level> levels_;
-  std::vector<Quantised> nodes_;
-  const float* heights_ = nullptr;  // the heightfield's (level 0)
+  std::shared_ptr<std::vector<Quantised>> storage_;  // shared by copies
+  const Quantised* nodes_ = nullptr;                  // storage_->data()
+  const float* heights_ = nullptr;  // the heightfield's (level 0); null when paged
+  std::shared_ptr<const HeightTileCache> pages_;      // paged level 0
   int width_ = 0, height_ = 0;       // samples per row / rows of heights_
   MinMax root_{0.f, 0.f};
   float base_ = 0.f, step_ = 1.f;  // height = base_ + q * step_

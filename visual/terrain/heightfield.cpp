@@ -1,10 +1,14 @@
 #include "terrain/heightfield.h"
+#include "terrain/height_tile_cache.h"
+#include "terrain/paged_heights.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace ig::terrain {
+
+float Heightfield::paged_at(int i, int j) const { return paged->cache->at(i, j); }
 
 float Heightfield::at_clamped(int i, int j) const {
   i = std::clamp(i, 0, width - 1);
@@ -54,6 +58,7 @@ std::optional<std::array<double, 4>> Heightfield::crs_bounds() const {
 }
 
 void Heightfield::finalize_stats() {
+  if (paged) return;  // the paged loader's pass over the source filled them
   if (heights.empty()) {
     min_m = max_m = 0.0f;
     mean_m = 0.0;

@@ -8,11 +8,14 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace ig::terrain {
+
+struct PagedHeights;  // terrain/paged_heights.h
 
 // Affine map from terrain-local grid indices to the DEM's own CRS, kept so
 // geodetic poses can be placed on the grid (GDAL geotransform convention,
@@ -29,7 +32,13 @@ struct Heightfield {
   int height = 0;  // samples south -> north
   double spacing_x_m = 1.0;
   double spacing_y_m = 1.0;
-  std::vector<float> heights;  // width * height, row-major, row 0 = south
+  std::vector<float> heights;  // width * height, row-major, row 0 = south; empty when paged
+  // Set for a DEM whose heights exceed the memory budget (issue 16): the
+  // samples are paged from the source by a tile cache, and the overview and
+  // min/max pyramid were built at load (terrain/paged_heights.h). at() and
+  // everything built on it read through it; code that reads `heights`
+  // directly checks has_whole_heights() first.
+  std::shared_ptr<const PagedHeights> paged;
 
   // Statistics filled by finalize_stats().
   float min_m = 0.0f;
@@ -42,8 +51,15 @@ struct Heightfield {
   int source_tiles = 0;       // > 0: mosaicked from this many tiles (terrain/dem_mosaic.h)
   int reprojected_tiles = 0;  // of which reprojected to the first tile's CRS
 
-  float at(int i, int j) const { return heights[static_cast<std::size_t>(j) * width + i]; }
-  float& at(int i, int j) { return heights[static_cast<std::size_t>(j) * width + i]; }
+  float at(int i, int j) const { return paged ? paged_at(i, j) : heights[static_cast<std::size_t>(j) * width + i]; }
+  // For writing a heightfield that is not paged.
+  float& ref(int i, int j) { return heights[static_cast<std::size_t>(j) * width + i]; }
+  // All samples are in `heights` (not paged).
+  bool has_whole_heights() const {
+    return !paged && heights.size() == static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  }
+  // Every sample readable through at(): whole or paged.
+  bool has_samples() const { return paged || has_whole_heights(); }
   // Clamped lookup: outside samples take the nearest edge sample.
   float at_clamped(int i, int j) const;
   double extent_x_m() const { return (width - 1) * spacing_x_m; }
@@ -59,6 +75,9 @@ struct Heightfield {
   // Georeferenced grids: the outer sample edges (half a sample beyond the
   // corner sample centres) in the DEM's CRS: west, south, east, north.
   std::optional<std::array<double, 4>> crs_bounds() const;
+
+ private:
+  float paged_at(int i, int j) const;
 };
 
 }  // namespace ig::terrain

@@ -15,7 +15,7 @@ Heightfield decimate_heightfield(const Heightfield& hf, int step) {
   o.spacing_y_m = hf.spacing_y_m * step;
   o.heights.resize(static_cast<std::size_t>(o.width) * o.height);
   for (int l = 0; l < o.height; ++l)
-    for (int k = 0; k < o.width; ++k) o.at(k, l) = hf.at(k * step, l * step);
+    for (int k = 0; k < o.width; ++k) o.ref(k, l) = hf.at(k * step, l * step);
   o.finalize_stats();
   o.nodata_count = 0;
   o.source = hf.source + " (overview, every " + std::to_string(step) + " samples)";

@@ -152,12 +152,18 @@ inline bool hit_triangle(double u, double v, double w, double az, double bz, dou
 inline bool intersect_cell(const Heightfield& hf, const Ray& r, int i, int j, double& t_best) {
   const double x0 = double(i) * hf.spacing_x_m, x1 = double(i + 1) * hf.spacing_x_m;
   const double y0 = double(j) * hf.spacing_y_m, y1 = double(j + 1) * hf.spacing_y_m;
-  const float* row0 = hf.heights.data() + static_cast<std::size_t>(j) * hf.width + i;
-  const float* row1 = row0 + hf.width;
-  const RVtx p00 = to_ray_space(r, x0, y0, drawn_height(r, x0, y0, row0[0]));
-  const RVtx p10 = to_ray_space(r, x1, y0, drawn_height(r, x1, y0, row0[1]));
-  const RVtx p01 = to_ray_space(r, x0, y1, drawn_height(r, x0, y1, row1[0]));
-  const RVtx p11 = to_ray_space(r, x1, y1, drawn_height(r, x1, y1, row1[1]));
+  float h[4];  // (i, j), (i+1, j), (i, j+1), (i+1, j+1)
+  if (hf.paged) {
+    h[0] = hf.at(i, j), h[1] = hf.at(i + 1, j), h[2] = hf.at(i, j + 1), h[3] = hf.at(i + 1, j + 1);
+  } else {
+    const float* row0 = hf.heights.data() + static_cast<std::size_t>(j) * hf.width + i;
+    const float* row1 = row0 + hf.width;
+    h[0] = row0[0], h[1] = row0[1], h[2] = row1[0], h[3] = row1[1];
+  }
+  const RVtx p00 = to_ray_space(r, x0, y0, drawn_height(r, x0, y0, h[0]));
+  const RVtx p10 = to_ray_space(r, x1, y0, drawn_height(r, x1, y0, h[1]));
+  const RVtx p01 = to_ray_space(r, x0, y1, drawn_height(r, x0, y1, h[2]));
+  const RVtx p11 = to_ray_space(r, x1, y1, drawn_height(r, x1, y1, h[3]));
   // Canonical edge directions: west->east, south->north, and the diagonal
   // (i,j)->(i+1,j+1). The east edge here is the west edge of cell i+1 and the
   // north edge is the south edge of cell j+1, computed identically there.
@@ -302,8 +308,7 @@ std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& 
                                     glm::dvec3 dir, double max_t, const Curvature& curvature, RayCastStats& stats) {
   stats = RayCastStats{};
   if (hf.width < 2 || hf.height < 2 || !valid_spacing(hf)) return std::nullopt;
-  if (pyr.empty() || pyr.cells_x() != hf.width - 1 || pyr.cells_y() != hf.height - 1 ||
-      hf.heights.size() != static_cast<std::size_t>(hf.width) * static_cast<std::size_t>(hf.height))
+  if (pyr.empty() || pyr.cells_x() != hf.width - 1 || pyr.cells_y() != hf.height - 1 || !hf.has_samples())
     throw std::invalid_argument("cast_ray: HeightPyramid was not built from this heightfield");
   const HeightPyramid::MinMax root = pyr.root();
   Ray r;
@@ -423,7 +428,7 @@ std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& 
       // other on memory): the grandchildren's block, or a cell's heights.
       if (cl > 0) {
         pyr.prefetch(cl - 1, 2 * kids[a].i, 2 * kids[a].j);
-      } else {
+      } else if (!hf.paged) {
 #if defined(__GNUC__) || defined(__clang__)
         const float* h = hf.heights.data() + static_cast<std::size_t>(kids[a].j) * hf.width + kids[a].i;
         __builtin_prefetch(h);
@@ -440,8 +445,7 @@ std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& 
 
 std::optional<RayHit> cast_ray_dda(const Heightfield& hf, glm::dvec3 origin, glm::dvec3 dir, double max_t) {
   if (hf.width < 2 || hf.height < 2 || !valid_spacing(hf)) return std::nullopt;
-  if (hf.heights.size() != static_cast<std::size_t>(hf.width) * static_cast<std::size_t>(hf.height))
-    return std::nullopt;
+  if (!hf.has_samples()) return std::nullopt;
   Ray r;  // height range from finalize_stats() (only scales a tiny slack; 0 if never called)
   if (!make_ray(origin, dir, max_t, scene_scale(hf, hf.min_m, hf.max_m), r)) return std::nullopt;
   if (auto h = origin_on_surface(hf, r)) return h;

@@ -64,6 +64,7 @@ void TerrainQuery::prefetch(double x_m, double y_m) const {
   if (!inside(x_m, y_m)) return;
   const int i = std::clamp(int(x_m / hf_.spacing_x_m), 0, hf_.width - 2);
   const int j = std::clamp(int(y_m / hf_.spacing_y_m), 0, hf_.height - 2);
+  if (hf_.paged) return;  // read through the tile cache
   const float* row = hf_.heights.data() + std::size_t(j) * std::size_t(hf_.width) + std::size_t(i);
 #if defined(__GNUC__) || defined(__clang__)
   __builtin_prefetch(row);

@@ -27,7 +27,7 @@ ig::terrain::Heightfield make_terrain() {
   hf.spacing_x_m = hf.spacing_y_m = 30.0;
   hf.heights.resize(std::size_t(hf.width) * hf.height);
   for (int j = 0; j < hf.height; ++j)
-    for (int i = 0; i < hf.width; ++i) hf.at(i, j) = float(100.0 + 3.0 * i + 0.5 * ((i * 7 + j * 13) % 11));
+    for (int i = 0; i < hf.width; ++i) hf.ref(i, j) = float(100.0 + 3.0 * i + 0.5 * ((i * 7 + j * 13) % 11));
   hf.finalize_stats();
   hf.georef = ig::terrain::make_geographic_georef(37.0, -118.0, 30.0, 30.0);
   return hf;

@@ -74,7 +74,7 @@ TEST(Level1Selection, BlocksCulledByTheBoxTestAndSortedNearestFirst) {
   hf.spacing_x_m = hf.spacing_y_m = 10.0;
   hf.heights.assign(size_t(hf.width) * hf.height, 0.0f);
   for (int j = 0; j < hf.height; ++j)
-    for (int i = 0; i < hf.width; ++i) hf.at(i, j) = float(i);  // a ramp east
+    for (int i = 0; i < hf.width; ++i) hf.ref(i, j) = float(i);  // a ramp east
   hf.finalize_stats();
   const ig::terrain::HeightPyramid pyramid(hf);
   const glm::ivec2 origin{0, 0};

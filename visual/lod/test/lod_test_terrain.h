@@ -20,7 +20,7 @@ inline ig::terrain::Heightfield heightfield_from(int w, int h, double spacing_x_
   hf.spacing_y_m = spacing_y_m;
   hf.heights.resize(size_t(w) * h);
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) hf.at(i, j) = float(height(i, j));
+    for (int i = 0; i < w; ++i) hf.ref(i, j) = float(height(i, j));
   hf.finalize_stats();
   return hf;
 }

@@ -28,7 +28,7 @@ Heightfield make_hf(int w, int h, const std::function<float(int, int)>& f, doubl
   hf.spacing_y_m = sy;
   hf.heights.resize(std::size_t(w) * h);
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) hf.at(i, j) = f(i, j);
+    for (int i = 0; i < w; ++i) hf.ref(i, j) = f(i, j);
   hf.finalize_stats();
   return hf;
 }

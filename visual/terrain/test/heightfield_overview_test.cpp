@@ -21,7 +21,7 @@ Heightfield ramp(int w, int h) {
   hf.spacing_y_m = 20.0;
   hf.heights.resize(static_cast<std::size_t>(w) * h);
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) hf.at(i, j) = float(i * 1000 + j);
+    for (int i = 0; i < w; ++i) hf.ref(i, j) = float(i * 1000 + j);
   hf.finalize_stats();
   hf.source = "ramp";
   return hf;

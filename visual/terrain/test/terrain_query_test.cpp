@@ -211,7 +211,7 @@ Heightfield rough_hf(unsigned seed) {
   std::uniform_real_distribution<float> noise(-20.f, 20.f);
   for (int j = 0; j < hf.height; ++j)
     for (int i = 0; i < hf.width; ++i)
-      hf.at(i, j) = float(300.0 + 120.0 * std::sin(i * 0.21) * std::cos(j * 0.17) + noise(rng));
+      hf.ref(i, j) = float(300.0 + 120.0 * std::sin(i * 0.21) * std::cos(j * 0.17) + noise(rng));
   hf.finalize_stats();
   return hf;
 }
@@ -300,7 +300,7 @@ TEST(TerrainQueryLos, CurvedRaysMatchBruteForceOnLoweredTriangles) {
 // its neighbours along the ray, at 0.5 degrees and shallower.
 TEST(TerrainQueryLos, GrazingRaysOverPeaks) {
   Heightfield hf = rough_hf(5);
-  hf.at(40, 50) = 900.0f;  // an isolated spike: the ray can only touch its top
+  hf.ref(40, 50) = 900.0f;  // an isolated spike: the ray can only touch its top
   hf.finalize_stats();
   const TerrainQuery q(hf, 0.0);
   const dvec3 peak(40 * hf.spacing_x_m, 50 * hf.spacing_y_m, 900.0);

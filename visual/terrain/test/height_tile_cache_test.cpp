@@ -1,0 +1,131 @@
+// The tile cache of paged heights (terrain/height_tile_cache.h): the same
+// samples as the whole array, the budget respected, LRU eviction, the
+// background loader, misses counted, read errors reported. A synthetic
+// reader stands in for GDAL; synchronisation by wait_idle(), never sleeps.
+#include "terrain/height_tile_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <random>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace ig::terrain {
+namespace {
+
+float value(int i, int j) { return float(i * 1000 + j) * 0.25f; }
+
+HeightTileCache::Reader synthetic(std::atomic<int>* reads = nullptr) {
+  return [reads](int, int, int x0, int y0, int w, int h, float* out) {
+    if (reads) ++*reads;
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) out[r * w + c] = value(x0 + c, y0 + r);
+  };
+}
+
+constexpr std::size_t kTileBytes = 16 * 16 * sizeof(float);
+
+TEST(HeightTileCache, SamplesMatchTheWholeArrayIncludingRaggedEdgeTiles) {
+  // 100 x 75 in 16^2 tiles: the last column of tiles is 4 wide, the last row 11 high.
+  HeightTileCache cache(100, 75, 16, 3 * kTileBytes, synthetic());
+  EXPECT_EQ(cache.tiles_x(), 7);
+  EXPECT_EQ(cache.tiles_y(), 5);
+  for (int j = 0; j < 75; ++j)
+    for (int i = 0; i < 100; ++i) ASSERT_EQ(cache.at(i, j), value(i, j)) << i << "," << j;
+  std::mt19937 rng(7);
+  for (int n = 0; n < 50; ++n) {
+    const int x = int(rng() % 100), y = int(rng() % 75);
+    const int w = 1 + int(rng() % (100 - x)), h = 1 + int(rng() % (75 - y));
+    std::vector<float> dst(std::size_t(w) * h, -1.f);
+    cache.read_rect(x, y, w, h, dst.data(), w);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) ASSERT_EQ(dst[r * w + c], value(x + c, y + r));
+  }
+}
+
+TEST(HeightTileCache, BudgetIsRespectedAndLeastRecentlyUsedIsEvicted) {
+  std::atomic<int> reads{0};
+  HeightTileCache cache(64, 64, 16, 3 * kTileBytes, synthetic(&reads));
+  cache.at(0, 0);    // tile (0,0)
+  cache.at(16, 0);   // (1,0)
+  cache.at(32, 0);   // (2,0)
+  cache.at(0, 0);    // (0,0) used again: (1,0) is now the least recent
+  cache.at(48, 0);   // (3,0): evicts (1,0)
+  EXPECT_TRUE(cache.resident(0, 0));
+  EXPECT_FALSE(cache.resident(1, 0));
+  EXPECT_TRUE(cache.resident(2, 0));
+  EXPECT_TRUE(cache.resident(3, 0));
+  const auto s = cache.stats();
+  EXPECT_EQ(s.misses, 4);  // four distinct tiles paged in on demand
+  EXPECT_EQ(reads.load(), 4);
+  EXPECT_EQ(s.evictions, 1);
+  EXPECT_EQ(s.resident_tiles, 3);
+  EXPECT_LE(s.peak_resident_bytes, 3 * kTileBytes);
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) cache.at(i, j);
+  EXPECT_LE(cache.stats().peak_resident_bytes, 3 * kTileBytes);
+}
+
+TEST(HeightTileCache, BackgroundThreadLoadsRequestedTilesSoReadsDoNotWait) {
+  std::atomic<int> reads{0};
+  HeightTileCache cache(128, 128, 16, 64 * kTileBytes, synthetic(&reads));
+  cache.request(20, 30, 40, 40);  // tiles 1..3 x 1..4: 12 tiles
+  cache.wait_idle();
+  const auto s = cache.stats();
+  EXPECT_EQ(s.prefetched, 12);
+  EXPECT_EQ(s.misses, 0);
+  for (int j = 30; j < 70; ++j)
+    for (int i = 20; i < 60; ++i) ASSERT_EQ(cache.at(i, j), value(i, j));
+  EXPECT_EQ(cache.stats().misses, 0);  // all resident already
+  EXPECT_EQ(reads.load(), 12);
+  cache.request(20, 30, 40, 40);  // resident: nothing queued
+  cache.wait_idle();
+  EXPECT_EQ(reads.load(), 12);
+}
+
+TEST(HeightTileCache, RequestsNeverQueueMoreThanTheBudgetHolds) {
+  HeightTileCache cache(256, 256, 16, 5 * kTileBytes, synthetic());
+  cache.request(0, 0, 256, 256);  // 256 tiles asked, 5 fit
+  cache.wait_idle();
+  const auto s = cache.stats();
+  EXPECT_EQ(s.prefetched, 5);
+  EXPECT_EQ(s.evictions, 0);
+  EXPECT_TRUE(cache.resident(7, 7) || cache.resident(8, 8));  // the nearest the centre
+}
+
+TEST(HeightTileCache, ConcurrentReadersSeeTheSameSamples) {
+  HeightTileCache cache(200, 200, 16, 10 * kTileBytes, synthetic());
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      std::mt19937 rng(t);
+      for (int n = 0; n < 20000; ++n) {
+        const int i = int(rng() % 200), j = int(rng() % 200);
+        if (cache.at(i, j) != value(i, j)) ++wrong;
+      }
+    });
+  for (int n = 0; n < 50; ++n) cache.request(int(n * 3 % 180), int(n * 7 % 180), 40, 40);
+  for (auto& th : threads) th.join();
+  cache.wait_idle();
+  EXPECT_EQ(wrong.load(), 0);
+  EXPECT_LE(cache.stats().peak_resident_bytes, 10 * kTileBytes);
+}
+
+TEST(HeightTileCache, ReadErrorsReachTheCallerAndTheBackgroundErrorIsKept) {
+  HeightTileCache cache(64, 64, 16, 16 * kTileBytes, [](int tx, int, int, int, int, int, float* out) {
+    if (tx == 2) throw std::runtime_error("tile 2 unreadable");
+    out[0] = 1.f;
+  });
+  EXPECT_THROW(cache.at(40, 0), std::runtime_error);
+  EXPECT_EQ(cache.at(0, 0), 1.f);
+  cache.request(32, 0, 16, 16);
+  cache.wait_idle();
+  EXPECT_EQ(cache.last_error(), "tile 2 unreadable");
+  EXPECT_FALSE(cache.resident(2, 0));
+}
+
+}  // namespace
+}  // namespace ig::terrain
