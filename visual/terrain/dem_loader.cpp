@@ -5,6 +5,7 @@
 #include "terrain/dem_loader.h"
 #include "terrain/dem_mosaic.h"
 #include "terrain/gdal_support.h"
+#include "terrain/huge_pages.h"
 
 #include <gdal.h>
 #include <cpl_conv.h>
@@ -225,6 +226,7 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
   hf.source = path;
   const std::size_t n = std::size_t(w) * std::size_t(ht);
   try {
+    reserve_in_huge_pages(hf.heights, n);  // scattered queries: terrain/huge_pages.h
     hf.heights.resize(n);
   } catch (const std::bad_alloc&) {
     throw DemError(path, "out of memory for a " + size_text(w, ht) + " grid");
@@ -374,6 +376,7 @@ Heightfield load_with_oiio(const std::string& path, const DemLoadOptions& opts,
   const double spacing = opts.spacing_m.value_or(1.0);
   hf.spacing_x_m = hf.spacing_y_m = spacing;
   try {
+    reserve_in_huge_pages(hf.heights, n);  // scattered queries: terrain/huge_pages.h
     hf.heights.resize(n);
     if (encoding == "png16") {
       std::vector<std::uint16_t> raw(n);

@@ -1,5 +1,7 @@
 #include "terrain/height_pyramid.h"
 
+#include "terrain/huge_pages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -60,6 +62,7 @@ HeightPyramid::HeightPyramid(const Heightfield& hf) {
     return c;
   };
 
+  reserve_in_huge_pages(nodes_, total);  // read at scattered places by ray casts
   nodes_.assign(total, Quantised{0, 0});
 
   // Level 2 from the level-1 nodes (read from the heights), 2x2 each.
