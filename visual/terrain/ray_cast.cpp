@@ -55,7 +55,8 @@ struct Ray {
 // the watertight edge test still holds.
 inline double drawn_height(const Ray& r, double x, double y, double h) {
   if (r.curve.radius_m <= 0.0) return h;
-  return h - curvature_drop(std::hypot(x - r.curve.centre_x, y - r.curve.centre_y), r.curve.radius_m);
+  const double dx = x - r.curve.centre_x, dy = y - r.curve.centre_y;
+  return h - curvature_drop_squared(dx * dx + dy * dy, r.curve.radius_m);
 }
 
 // A box's height range [lo, hi] over footprint [x0, x1] x [y0, y1] as drawn:
@@ -66,8 +67,8 @@ inline void drawn_range(const Ray& r, double x0, double x1, double y0, double y1
   const double cx = r.curve.centre_x, cy = r.curve.centre_y;
   const double nx = std::max({x0 - cx, 0.0, cx - x1}), ny = std::max({y0 - cy, 0.0, cy - y1});
   const double fx = std::max(std::abs(x0 - cx), std::abs(x1 - cx)), fy = std::max(std::abs(y0 - cy), std::abs(y1 - cy));
-  const double far = curvature_drop(std::hypot(fx, fy), r.curve.radius_m);
-  const double near = curvature_drop(std::hypot(nx, ny), r.curve.radius_m);
+  const double far = curvature_drop_squared(fx * fx + fy * fy, r.curve.radius_m);
+  const double near = curvature_drop_squared(nx * nx + ny * ny, r.curve.radius_m);
   lo -= far + 1e-9 * (1.0 + far);
   hi -= near - 1e-9 * (1.0 + near);
 }
