@@ -263,8 +263,8 @@ void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHi
   out.range_valid = hit.has_value();
   if (!hit) return;
   out.range_m = hit->range_m;
+  if (!out.extended) return;  // the basic response carries the range only
   azimuth_elevation(hit->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
-  if (!out.extended) return;
   if (coords == CigiCoords::Entity) {
     const BodyAxes b = body_axes(ownship);
     const glm::dvec3 d = hit->point - ownship.position;
