@@ -81,6 +81,7 @@ void HostServices::take(std::span<const std::uint8_t> datagram) {
 std::vector<CigiResponse> HostServices::answer_frame(const io::Pose& ownship) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<CigiResponse> out;
+  out.reserve(std::min(queue_.size() + periodic_.size(), options_.max_hat_hot_per_frame + options_.max_los_per_frame));
   std::size_t hat_hot = 0, los = 0, bytes = kCigiStartOfFrameSize;
   auto fits = [&](const CigiRequest& q) {
     if (is_los(q) ? los >= options_.max_los_per_frame : hat_hot >= options_.max_hat_hot_per_frame) return false;
@@ -251,7 +252,8 @@ HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& own
   out.valid = true;
   out.hot_m = s->height_m;
   out.hat_m = p->z - s->height_m;
-  azimuth_elevation(s->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
+  // Only the extended response carries the normal (two inverse trig calls).
+  if (out.extended) azimuth_elevation(s->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
   return out;
 }
 
@@ -261,8 +263,8 @@ void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHi
   out.range_valid = hit.has_value();
   if (!hit) return;
   out.range_m = hit->range_m;
+  if (!out.extended) return;  // the basic response carries the range only
   azimuth_elevation(hit->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
-  if (!out.extended) return;
   if (coords == CigiCoords::Entity) {
     const BodyAxes b = body_axes(ownship);
     const glm::dvec3 d = hit->point - ownship.position;

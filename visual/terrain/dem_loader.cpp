@@ -6,6 +6,7 @@
 #include "terrain/dem_mosaic.h"
 #include "terrain/gdal_support.h"
 #include "terrain/gdal_tile_reader.h"
+#include "terrain/huge_pages.h"
 #include "terrain/paged_dem_loader.h"
 #include "terrain/paged_heights.h"
 #include "terrain/void_fill.h"
@@ -135,6 +136,7 @@ void read_whole_heights(Heightfield& hf, GDALRasterBandH band, const std::string
   hf.source = path;
   const std::size_t n = std::size_t(w) * std::size_t(ht);
   try {
+    reserve_in_huge_pages(hf.heights, n);  // scattered queries: terrain/huge_pages.h
     hf.heights.resize(n);
   } catch (const std::bad_alloc&) {
     throw DemError(path, "out of memory for a " + size_text(w, ht) + " grid");
@@ -335,6 +337,7 @@ Heightfield load_with_oiio(const std::string& path, const DemLoadOptions& opts,
   const double spacing = opts.spacing_m.value_or(1.0);
   hf.spacing_x_m = hf.spacing_y_m = spacing;
   try {
+    reserve_in_huge_pages(hf.heights, n);  // scattered queries: terrain/huge_pages.h
     hf.heights.resize(n);
     if (encoding == "png16") {
       std::vector<std::uint16_t> raw(n);

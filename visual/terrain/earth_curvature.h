@@ -16,11 +16,18 @@ namespace ig::terrain {
 // Mean Earth radius (IUGG), metres.
 constexpr double kEarthRadiusM = 6371008.8;
 
-// The drop at horizontal distance d (clamped to R: the sphere's widest point).
-inline double curvature_drop(double horizontal_distance_m, double earth_radius_m) {
+// The drop from the squared horizontal distance d^2 (clamped to R^2: the
+// sphere's widest point). Inner loops (the ray cast) pass dx^2 + dy^2: no
+// hypot to take first.
+inline double curvature_drop_squared(double d2, double earth_radius_m) {
   if (!(earth_radius_m > 0.0)) return 0.0;
-  const double d2 = std::min(horizontal_distance_m * horizontal_distance_m, earth_radius_m * earth_radius_m);
+  d2 = std::min(d2, earth_radius_m * earth_radius_m);
   return d2 / (earth_radius_m + std::sqrt(earth_radius_m * earth_radius_m - d2));
+}
+
+// The drop at horizontal distance d.
+inline double curvature_drop(double horizontal_distance_m, double earth_radius_m) {
+  return curvature_drop_squared(horizontal_distance_m * horizontal_distance_m, earth_radius_m);
 }
 
 }  // namespace ig::terrain

@@ -1,4 +1,5 @@
 #include "terrain/height_pyramid.h"
+#include "terrain/huge_pages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -83,7 +84,9 @@ void HeightPyramid::make_levels(int width, int height) {
     nx = (nx + 1) / 2;
     ny = (ny + 1) / 2;
   }
-  storage_ = std::make_shared<std::vector<Quantised>>(total, Quantised{0, 0});
+  storage_ = std::make_shared<std::vector<Quantised>>();
+  reserve_in_huge_pages(*storage_, total);  // read at scattered places by ray casts
+  storage_->assign(total, Quantised{0, 0});
   nodes_ = storage_->data();
 }
 

@@ -88,17 +88,23 @@ class HeightPyramid {
     const Quantised q = nodes_[index(levels_[level], i, j)];
     return MinMax{decode(q.lo), decode(q.hi)};
   }
-  // Hint for traversals: start fetching the 2x2 block holding node (i, j)
-  // (at level 0: the two rows of heights under it).
+  // Hint for traversals: start fetching the 2x2 block holding node (i, j),
+  // what expanding its parent reads (levels 0 and 1: the heights under the
+  // block, 3 or 5 rows; each row's first and last sample, which may lie in
+  // different cache lines).
   void prefetch(int level, int i, int j) const {
 #if defined(__GNUC__) || defined(__clang__)
     if (level <= 1 && !heights_) return;  // paged: read through the cache
-    if (level <= 1) {  // the 2 or 3 rows of heights under it
-      const int step = level == 0 ? 1 : 2;
-      const float* h = heights_ + static_cast<std::size_t>(j * step) * width_ + i * step;
-      __builtin_prefetch(h);
-      __builtin_prefetch(h + width_);
-      if (level == 1 && j * 2 + 2 < height_) __builtin_prefetch(h + 2 * width_);
+    if (level <= 1) {
+      const int step = 1 << level;
+      const int c0 = (i & ~1) * step, r0 = (j & ~1) * step;
+      const int c1 = c0 + 2 * step < width_ ? c0 + 2 * step : width_ - 1;
+      const int r1 = r0 + 2 * step < height_ ? r0 + 2 * step : height_ - 1;
+      for (int r = r0; r <= r1; ++r) {
+        const float* row = heights_ + static_cast<std::size_t>(r) * width_;
+        __builtin_prefetch(row + c0);
+        __builtin_prefetch(row + c1);
+      }
     } else {
       __builtin_prefetch(nodes_ + index(levels_[level], i, j));
     }

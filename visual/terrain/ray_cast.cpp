@@ -48,6 +48,9 @@ struct Ray {
   double t_lo = -kSurfaceEpsM;  // smallest t accepted (then clamped to 0)
   double slack_abs = 0;         // absolute slack (metres) for box tests
   Curvature curve;              // radius_m 0: flat
+  // 1 / 2R and 1 / R^2 for the box bounds (0: R outside [1 m, 1e100 m], where
+  // they could overflow; the exact drop is taken instead).
+  double half_inv_r = 0, inv_r2 = 0;
 };
 
 // A sample's height as drawn for the ray's curvature centre. A pure function
@@ -55,19 +58,28 @@ struct Ray {
 // the watertight edge test still holds.
 inline double drawn_height(const Ray& r, double x, double y, double h) {
   if (r.curve.radius_m <= 0.0) return h;
-  return h - curvature_drop(std::hypot(x - r.curve.centre_x, y - r.curve.centre_y), r.curve.radius_m);
+  const double dx = x - r.curve.centre_x, dy = y - r.curve.centre_y;
+  return h - curvature_drop_squared(dx * dx + dy * dy, r.curve.radius_m);
 }
 
 // A box's height range [lo, hi] over footprint [x0, x1] x [y0, y1] as drawn:
-// lowered by the drop at its farthest corner (lo) and its nearest point (hi),
-// widened by a hair so rounding of the per-sample drops cannot leave it.
+// lowered by at least the drop at its farthest corner (lo) and at most the
+// drop at its nearest point (hi), widened by a hair so rounding of the
+// per-sample drops cannot leave it. The drop's bounds need no square root or
+// division (they run for every node tested): with x = d^2 / R^2 <= 1,
+//   d^2 / 2R  <=  drop(d) = d^2 / (R + sqrt(R^2 - d^2))  <=  d^2 / 2R * (1 + x)
+// (the upper one as (1 + x)(1 + sqrt(1 - x)) >= 2); they differ by about
+// 3 d^4 / 8 R^3, 0.2 mm at 20 km, which only loosens the box a little.
 inline void drawn_range(const Ray& r, double x0, double x1, double y0, double y1, double& lo, double& hi) {
   if (r.curve.radius_m <= 0.0) return;
   const double cx = r.curve.centre_x, cy = r.curve.centre_y;
   const double nx = std::max({x0 - cx, 0.0, cx - x1}), ny = std::max({y0 - cy, 0.0, cy - y1});
   const double fx = std::max(std::abs(x0 - cx), std::abs(x1 - cx)), fy = std::max(std::abs(y0 - cy), std::abs(y1 - cy));
-  const double far = curvature_drop(std::hypot(fx, fy), r.curve.radius_m);
-  const double near = curvature_drop(std::hypot(nx, ny), r.curve.radius_m);
+  const double r2 = r.curve.radius_m * r.curve.radius_m;
+  const double far2 = std::min(fx * fx + fy * fy, r2), near2 = std::min(nx * nx + ny * ny, r2);
+  const bool products = r.half_inv_r > 0.0;
+  const double far = products ? far2 * r.half_inv_r * (1.0 + far2 * r.inv_r2) : curvature_drop_squared(far2, r.curve.radius_m);
+  const double near = products ? near2 * r.half_inv_r : curvature_drop_squared(near2, r.curve.radius_m);
   lo -= far + 1e-9 * (1.0 + far);
   hi -= near - 1e-9 * (1.0 + near);
 }
@@ -217,9 +229,15 @@ inline void axis_spans(const Ray& r, int a, const double planes[3], int n, Span 
     }
     return;
   }
-  double t[3];
-  for (int k = 0; k <= n; ++k) t[k] = (planes[k] - r.o[a]) * r.inv[a];
-  for (int k = 0; k < n; ++k) out[k] = Span{std::min(t[k], t[k + 1]), std::max(t[k], t[k + 1])};
+  // Scalars, not a loop over an array: the compiler stored such an array and
+  // read it back in pairs, a load that waits for the stores to retire.
+  const double o = r.o[a], inv = r.inv[a];
+  const double t0 = (planes[0] - o) * inv, t1 = (planes[1] - o) * inv;
+  out[0] = Span{std::min(t0, t1), std::max(t0, t1)};
+  if (n == 2) {
+    const double t2 = (planes[2] - o) * inv;
+    out[1] = Span{std::min(t1, t2), std::max(t1, t2)};
+  }
 }
 
 // Ray vs axis-aligned box, clipped to [t_lo, t_max]. On success gives the
@@ -314,8 +332,13 @@ std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& 
   Ray r;
   if (!make_ray(origin, dir, max_t, scene_scale(hf, root.lo, root.hi), r)) return std::nullopt;
   if (curvature.radius_m > 0.0 && std::isfinite(curvature.radius_m) && std::isfinite(curvature.centre_x) &&
-      std::isfinite(curvature.centre_y))
+      std::isfinite(curvature.centre_y)) {
     r.curve = curvature;
+    if (curvature.radius_m >= 1.0 && curvature.radius_m <= 1e100) {
+      r.half_inv_r = 0.5 / curvature.radius_m;
+      r.inv_r2 = 1.0 / (curvature.radius_m * curvature.radius_m);
+    }
+  }
 
   const double sx = hf.spacing_x_m, sy = hf.spacing_y_m;
   const std::int64_t ncx = pyr.cells_x(), ncy = pyr.cells_y();
@@ -366,8 +389,13 @@ std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& 
     stack[sp++] = Entry{key, pyr.num_levels() - 1, 0, 0};
   }
 
-  while (sp > 0) {
-    const Entry e = stack[--sp];
+  // The nearest child is visited next without a trip through the stack
+  // (a store just made and read back at once stalls the load).
+  Entry e{};
+  bool have_next = false;
+  while (have_next || sp > 0) {
+    if (!have_next) e = stack[--sp];
+    have_next = false;
     if (e.key > best) continue;
     if (e.level == 0) {
       ++stats.cells_tested;
@@ -419,11 +447,17 @@ std::optional<RayHit> cast_ray_impl(const Heightfield& hf, const HeightPyramid& 
         kids[n++] = Child{t2d, enter - slack(r, enter), ci0 + di, cj0 + dj};
       }
     }
-    // Insertion sort by footprint entry (n <= 4), then push farthest first.
+    // Insertion sort by footprint entry (n <= 4), then push farthest first;
+    // the nearest is the next node.
     for (int a = 1; a < n; ++a)
       for (int b = a; b > 0 && kids[b].t2d < kids[b - 1].t2d; --b) std::swap(kids[b], kids[b - 1]);
     for (int a = n - 1; a >= 0; --a) {
-      stack[sp++] = Entry{kids[a].key, cl, kids[a].i, kids[a].j};
+      if (a > 0) {
+        stack[sp++] = Entry{kids[a].key, cl, kids[a].i, kids[a].j};
+      } else {
+        e = Entry{kids[a].key, cl, kids[a].i, kids[a].j};
+        have_next = true;
+      }
       // Their data is read soon (dependent loads otherwise wait one after the
       // other on memory): the grandchildren's block, or a cell's heights.
       if (cl > 0) {
