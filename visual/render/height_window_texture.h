@@ -9,6 +9,7 @@
 // from the heightfield's rows, no staging copy; for paged heights, copied
 // out of the tile cache, whose background thread is asked every move for the
 // window and one tile around it, so the rows that scroll in are resident).
+// The wrap-around texture itself is render/window_texture.h.
 
 #include <epoxy/gl.h>
 
@@ -16,9 +17,8 @@
 
 #include <vector>
 
-#include "gl/gl_objects.h"
+#include "render/window_texture.h"
 #include "terrain/heightfield.h"
-#include "terrain/toroidal_window.h"
 
 namespace ig::render {
 
@@ -37,16 +37,14 @@ class HeightWindowTexture {
   void prefetch_around(glm::ivec2 centre) const;
 
   GLuint id() const { return tex_.id(); }
-  bool placed() const { return window_.placed(); }  // centred at least once
-  glm::ivec2 origin() const { return window_.origin(); }
-  glm::ivec2 size() const { return {window_.size_x(), window_.size_y()}; }
-  long long uploaded_samples() const { return uploaded_; }
+  bool placed() const { return tex_.placed(); }  // centred at least once
+  glm::ivec2 origin() const { return tex_.origin(); }
+  glm::ivec2 size() const { return tex_.size(); }
+  long long uploaded_samples() const { return tex_.uploaded_texels(); }
 
  private:
   const terrain::Heightfield& hf_;
-  terrain::ToroidalWindow window_;
-  gl::Texture tex_;
-  long long uploaded_ = 0;
+  WindowTexture tex_;
   std::vector<float> staging_;  // paged heights: one rectangle out of the tile cache
 };
 
