@@ -34,6 +34,23 @@ std::vector<std::uint8_t> read_rgb(GDALDatasetH ds, const std::string& path) {
   return rgb;
 }
 
+// Box-averages a south-first RGB raster by `step` (its sides are multiples of it).
+std::vector<std::uint8_t> box_average(const std::vector<std::uint8_t>& rgb, int w, int h, int step) {
+  const int ow = w / step, oh = h / step, n = step * step;
+  std::vector<std::uint8_t> out(std::size_t(ow) * oh * 3);
+  std::vector<std::uint32_t> sums(std::size_t(ow) * 3);
+  for (int oy = 0; oy < oh; ++oy) {
+    std::fill(sums.begin(), sums.end(), 0u);
+    for (int y = oy * step; y < (oy + 1) * step; ++y) {
+      const std::uint8_t* row = rgb.data() + std::size_t(y) * w * 3;
+      for (int x = 0; x < ow * step; ++x)
+        for (int c = 0; c < 3; ++c) sums[std::size_t(x / step) * 3 + c] += row[std::size_t(x) * 3 + c];
+    }
+    for (std::size_t i = 0; i < sums.size(); ++i) out[std::size_t(oy) * ow * 3 + i] = std::uint8_t((sums[i] + n / 2) / n);
+  }
+  return out;
+}
+
 }  // namespace
 
 Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_side) {
@@ -65,11 +82,23 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
                                ".." + number_arg(sy1) + ", DEM " + number_arg(b[0]) + ".." + number_arg(b[2]) + " x " + number_arg(b[1]) + ".." +
                                number_arg(b[3]) + " in the DEM's CRS)");
     const double per_x = (b[2] - b[0]) / std::abs(suggested[1]), per_y = (b[3] - b[1]) / std::abs(suggested[5]);
-    out.width = std::clamp(int(std::lround(per_x)), hf.width, max_side);
-    out.height = std::clamp(int(std::lround(per_y)), hf.height, max_side);
+    double want_x = std::max(double(std::lround(per_x)), double(hf.width));
+    double want_y = std::max(double(std::lround(per_y)), double(hf.height));
+    const double shrink = std::sqrt(double(kMaxFullImageryBytes) / (3.0 * want_x * want_y));
+    if (shrink < 1.0) want_x *= shrink, want_y *= shrink;  // held in memory: capped
+    if (want_x <= max_side && want_y <= max_side) {  // one texture, as before issue 16's window
+      out.width = int(want_x);
+      out.height = int(want_y);
+    } else {
+      // Full resolution, rounded to a multiple of the overview's step so the
+      // overview's pixels are exact step x step blocks of it.
+      out.full_step = int(std::ceil(std::max(want_x, want_y) / max_side));
+      out.width = std::clamp(int(std::lround(want_x / out.full_step)), 1, max_side);
+      out.height = std::clamp(int(std::lround(want_y / out.full_step)), 1, max_side);
+    }
     use = gdal::warp(h, "", {"-of", "MEM", "-t_srs", hf.georef->crs_wkt, "-te", number_arg(b[0]), number_arg(b[1]),
-                             number_arg(b[2]), number_arg(b[3]), "-ts", std::to_string(out.width),
-                             std::to_string(out.height), "-r", "bilinear", "-dstalpha"});
+                             number_arg(b[2]), number_arg(b[3]), "-ts", std::to_string(out.full_width()),
+                             std::to_string(out.full_height()), "-r", "bilinear", "-dstalpha"});
     if (!use) throw DemError(path, "imagery warp failed: " + last_error("unknown GDAL error"));
     out.warped = true;
   } else {
@@ -82,11 +111,12 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
   }
   GDALDatasetH ds = handle(use ? use : src);
   auto rgb = read_rgb(ds, path);
+  const int fw = out.full_width(), fh = out.full_height();
   if (out.warped) {  // the destination alpha band says where the image covers the footprint
     const int bands = GDALGetRasterCount(ds);
-    std::vector<std::uint8_t> alpha(std::size_t(out.width) * out.height);
-    if (GDALRasterIO(GDALGetRasterBand(ds, bands), GF_Read, 0, 0, out.width, out.height, alpha.data(), out.width,
-                     out.height, GDT_Byte, 0, 0) != CE_None)
+    std::vector<std::uint8_t> alpha(std::size_t(fw) * fh);
+    if (GDALRasterIO(GDALGetRasterBand(ds, bands), GF_Read, 0, 0, fw, fh, alpha.data(), fw, fh, GDT_Byte, 0, 0) !=
+        CE_None)
       throw DemError(path, "imagery coverage read failed: " + last_error("unknown GDAL error"));
     for (std::size_t p = 0; p < alpha.size(); ++p)
       if (alpha[p] == 0) {
@@ -94,11 +124,19 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
         rgb[3 * p] = rgb[3 * p + 1] = rgb[3 * p + 2] = 128;
       }
   }
-  // North row first in the raster; south first in the DEM's texture.
-  out.rgb.resize(rgb.size());
-  const std::size_t row = std::size_t(out.width) * 3;
-  for (int y = 0; y < out.height; ++y)
-    std::copy_n(rgb.begin() + std::ptrdiff_t(y * row), row, out.rgb.begin() + std::ptrdiff_t((out.height - 1 - y) * row));
+  use.reset();  // the warp's copy is no longer needed
+  // North row first in the raster; south first in the DEM's texture (in
+  // place: no second copy of a large image).
+  const std::size_t row = std::size_t(fw) * 3;
+  for (int y = 0; y < fh / 2; ++y)
+    std::swap_ranges(rgb.begin() + std::ptrdiff_t(y * row), rgb.begin() + std::ptrdiff_t((y + 1) * row),
+                     rgb.begin() + std::ptrdiff_t((fh - 1 - y) * row));
+  if (out.full_step == 1) {
+    out.rgb = std::move(rgb);
+  } else {
+    out.rgb = box_average(rgb, fw, fh, out.full_step);
+    out.full_rgb = std::move(rgb);
+  }
   return out;
 }
 

@@ -4,7 +4,10 @@
 // onto the DEM's footprint (its outer sample edges, in the DEM's CRS), so
 // texture coordinate (s + 0.5) / dem_size lands on sample s as the shaders
 // expect; an image without georeferencing is taken to span the DEM exactly
-// (the old behaviour). No GL here. docs/terrain-data.md.
+// (the old behaviour). Georeferenced imagery finer than the texture limit is
+// kept at full resolution (for the scene's imagery window, render/
+// imagery_window_texture.h) plus an overview of it that fits one texture
+// (issue 16). No GL here. docs/terrain-data.md.
 
 #include <cstdint>
 #include <string>
@@ -15,16 +18,32 @@
 namespace ig::terrain {
 
 struct Imagery {
+  // What one texture holds over the whole footprint: the image, or beyond
+  // the limit its overview (each pixel the mean of full_step x full_step
+  // full-resolution pixels, so both grids share their outer edges).
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;  // width * height * 3, row 0 = SOUTH (as the DEM)
   bool warped = false;            // reprojected / resampled onto the DEM's footprint
-  std::int64_t uncovered = 0;     // pixels of the footprint the image does not cover (left grey)
+  std::int64_t uncovered = 0;     // full-resolution pixels of the footprint the image does not cover (grey)
+  // Beyond the limit only: the full resolution (full_step * width x
+  // full_step * height), row 0 = south; empty when the image fits.
+  int full_step = 1;
+  std::vector<std::uint8_t> full_rgb;
+  int full_width() const { return width * full_step; }
+  int full_height() const { return height * full_step; }
 };
 
-// Loads `path` for `hf`, at most max_side pixels a side (the GL texture
-// limit). Throws DemError ("<path>: <reason>") for an unreadable file, an
-// image with no colour bands, or a georeferenced image that does not overlap
-// the DEM at all.
+// At most this many bytes of full-resolution imagery are held (RGB, in
+// memory, not paged): finer imagery is resampled down to it (~18900^2 RGB;
+// loading needs about 2.7 times that at its peak: the warp's RGBA and the read).
+constexpr std::int64_t kMaxFullImageryBytes = std::int64_t(1) << 30;
+
+// Loads `path` for `hf`. A georeferenced image gets about its own resolution
+// over the DEM (at least one pixel per DEM sample); beyond max_side (the
+// texture limit) a side it also gets an overview within max_side. An image
+// without georeferencing must fit max_side. Throws DemError ("<path>:
+// <reason>") for an unreadable file, an image with no colour bands, or a
+// georeferenced image that does not overlap the DEM at all.
 Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_side);
 
 }  // namespace ig::terrain
