@@ -10,8 +10,12 @@ uniform sampler2D u_height_window;  // full-resolution window, wrap-around (rend
 uniform ivec2 u_window_origin;  // the window's south-west sample
 uniform ivec2 u_window_size;    // (0, 0): no window
 uniform int u_overview_step;    // > 1: u_height is an overview, every u_overview_step-th sample
-uniform sampler2D u_imagery;    // RGB draped over the DEM (only when u_has_imagery)
+uniform sampler2D u_imagery;    // RGB draped over the DEM (only when u_has_imagery); an overview beyond the limit
 uniform bool u_has_imagery;
+uniform sampler2D u_imagery_window;     // full-resolution imagery, wrap-around (render/imagery_window_texture.h)
+uniform ivec2 u_imagery_window_origin;  // its south-west pixel
+uniform ivec2 u_imagery_window_size;    // (0, 0): no imagery window
+uniform ivec2 u_imagery_full_size;      // pixels of the full-resolution image over the footprint
 uniform ivec2 u_dem_size;
 uniform vec2 u_spacing;
 uniform vec2 u_height_range;    // DEM min, max (m)
@@ -30,6 +34,25 @@ float height_at(vec2 s) {
   if (u_overview_step > 1)  // overview sample k is DEM sample k * step
     return textureLod(u_height, (s / float(u_overview_step) + 0.5) / vec2(textureSize(u_height, 0)), 0.0).r;
   return textureLod(u_height, (s + 0.5) / vec2(u_dem_size), 0.0).r;
+}
+
+vec3 imagery_at(vec2 s) {
+  vec2 uv = (s + 0.5) / vec2(u_dem_size);
+  if (u_imagery_window_size.x > 0) {
+    // Full-resolution pixel coordinates (pixel k centred at k + 0.5) and
+    // their screen derivatives, taken before the per-fragment choice.
+    vec2 p = uv * vec2(u_imagery_full_size);
+    vec2 px = dFdx(p), py = dFdy(p);
+    vec2 r = p - 0.5 - vec2(u_imagery_window_origin);
+    // The window where both bilinear neighbours are in it and the image is
+    // magnified (the window has no mipmaps: there the whole texture would
+    // read level 0 too); elsewhere the overview, with its mipmaps.
+    bool inside = all(greaterThanEqual(r, vec2(0.0))) && all(lessThanEqual(r, vec2(u_imagery_window_size - 1)));
+    if (inside && max(dot(px, px), dot(py, py)) <= 1.0)
+      return textureLod(u_imagery_window, p / vec2(u_imagery_window_size), 0.0).rgb;
+    return textureGrad(u_imagery, uv, px / vec2(u_imagery_full_size), py / vec2(u_imagery_full_size)).rgb;
+  }
+  return texture(u_imagery, uv).rgb;
 }
 
 vec3 ramp(float h01, float slope) {
@@ -51,7 +74,7 @@ vec3 shade(vec2 s, float dist) {
   float slope = 1.0 - n.z;
   float span = max(u_height_range.y - u_height_range.x, 1.0);
   float h01 = clamp((height_at(s) - u_height_range.x) / span, 0.0, 1.0);
-  vec3 albedo = u_has_imagery ? texture(u_imagery, (s + 0.5) / vec2(u_dem_size)).rgb
+  vec3 albedo = u_has_imagery ? imagery_at(s)
                               : ramp(h01, clamp(slope * 3.0, 0.0, 1.0));
   float diffuse = max(dot(n, u_sun_dir), 0.0);
   vec3 color = albedo * (0.25 + 0.85 * diffuse);

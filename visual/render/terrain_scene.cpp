@@ -51,7 +51,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     // Georeferenced imagery is warped onto the DEM's footprint (terrain/imagery_loader.h).
     terrain::Imagery img;
     try {
-      img = terrain::load_imagery(hf, *imagery_path, max_size);
+      img = terrain::load_imagery(hf, *imagery_path, limit);
     } catch (const std::exception& e) {
       throw gl::GlError(e.what());
     }
@@ -66,6 +66,10 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     imagery_uncovered_ = img.uncovered;
+    if (!img.full_rgb.empty())  // finer than one texture: full resolution in a window
+      imagery_window_ = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height,
+                                                               std::min(kDefaultHeightWindow, limit),
+                                                               *imagery_path + ": imagery window");
   }
 }
 
@@ -93,6 +97,15 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
   p.set("u_window_origin", windowed ? height_window_->origin() : glm::ivec2(0));
   p.set("u_window_size", windowed ? height_window_->size() : glm::ivec2(0));
   p.set("u_overview_step", overview_step_);
+  // The imagery window on unit 6.
+  const bool imagery_windowed = imagery_window_ && imagery_window_->placed();
+  if (imagery_windowed) {
+    glBindTextureUnit(6, imagery_window_->id());
+    p.set("u_imagery_window", 6);
+    p.set("u_imagery_full_size", imagery_window_->full_size());
+  }
+  p.set("u_imagery_window_origin", imagery_windowed ? imagery_window_->origin() : glm::ivec2(0));
+  p.set("u_imagery_window_size", imagery_windowed ? imagery_window_->size() : glm::ivec2(0));
   // Beyond one texture, sample coordinates reach 2^14 and more: interpolated
   // across Level0's large triangles they lose up to a few hundredths of a
   // sample in float, enough for Level0's clip test against Level1's square to
@@ -136,6 +149,7 @@ void TerrainScene::prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) const {
 }
 
 long long TerrainScene::follow_window(glm::ivec2 centre) const {
+  if (imagery_window_) imagery_window_->centre_on_sample(centre);
   return height_window_ ? height_window_->centre_on(centre) : 0;
 }
 

@@ -31,6 +31,7 @@
 #include "gl/shader_program.h"
 #include "options/shading_options.h"
 #include "render/height_window_texture.h"
+#include "render/imagery_window_texture.h"
 #include "render/camera.h"
 #include "terrain/height_pyramid.h"
 #include "terrain/heightfield.h"
@@ -72,6 +73,11 @@ class TerrainScene {
   // (terrain/heightfield_overview.h), e.g. to build Level0 on.
   const terrain::Heightfield& texture_heightfield() const { return overview_ ? *overview_ : heightfield_; }
   bool has_imagery() const { return bool(imagery_tex_); }
+  // Imagery finer than the texture limit: the imagery texture is its
+  // overview and this window holds full resolution around the point
+  // follow_window() is given (issue 16); null otherwise. Only methods that
+  // call follow_window (twolevel) can draw it.
+  const ImageryWindowTexture* imagery_window() const { return imagery_window_.get(); }
   double upload_ms() const { return upload_ms_; }
   // Imagery texels of the DEM's footprint the image did not cover (grey).
   std::int64_t imagery_uncovered() const { return imagery_uncovered_; }
@@ -94,6 +100,7 @@ class TerrainScene {
   void enable_height_window(int size);
   // Centres the window on sample `centre` (clamped to the DEM), uploading
   // what scrolled in; returns the samples uploaded (0 without a window).
+  // The imagery window, if any, follows too (its pixels are not counted).
   // const: the window is a cache of heights the scene already serves.
   long long follow_window(glm::ivec2 centre) const;
   const HeightWindowTexture* height_window() const { return height_window_.get(); }
@@ -133,6 +140,7 @@ class TerrainScene {
   std::int64_t imagery_uncovered_ = 0;
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   mutable std::unique_ptr<HeightWindowTexture> height_window_;  // see enable_height_window()
+  mutable std::unique_ptr<ImageryWindowTexture> imagery_window_;  // see imagery_window()
   glm::dvec3 world_origin_{0.0};
   double earth_radius_m_ = 0.0;
 };
