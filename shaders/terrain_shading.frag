@@ -16,6 +16,7 @@ uniform sampler2D u_imagery_window;     // full-resolution imagery, wrap-around 
 uniform ivec2 u_imagery_window_origin;  // its south-west pixel
 uniform ivec2 u_imagery_window_size;    // (0, 0): no imagery window
 uniform ivec2 u_imagery_full_size;      // pixels of the full-resolution image over the footprint
+uniform float u_imagery_overview_lod;   // log2 of full-resolution pixels per overview pixel
 uniform ivec2 u_dem_size;
 uniform vec2 u_spacing;
 uniform vec2 u_height_range;    // DEM min, max (m)
@@ -44,12 +45,19 @@ vec3 imagery_at(vec2 s) {
     vec2 p = uv * vec2(u_imagery_full_size);
     vec2 px = dFdx(p), py = dFdy(p);
     vec2 r = p - 0.5 - vec2(u_imagery_window_origin);
-    // The window where both bilinear neighbours are in it and the image is
-    // magnified (the window has no mipmaps: there the whole texture would
-    // read level 0 too); elsewhere the overview, with its mipmaps.
+    // The window where both bilinear neighbours are in it. The window has no
+    // mipmaps, so as a whole texture's trilinear filter would: level 0 alone
+    // where the image is magnified (lod <= 0), blended towards the overview
+    // (a box mean, i.e. the level u_imagery_overview_lod of a mip chain)
+    // up to that level; beyond it, or outside the window, the overview with
+    // its own mipmaps.
     bool inside = all(greaterThanEqual(r, vec2(0.0))) && all(lessThanEqual(r, vec2(u_imagery_window_size - 1)));
-    if (inside && max(dot(px, px), dot(py, py)) <= 1.0)
-      return textureLod(u_imagery_window, p / vec2(u_imagery_window_size), 0.0).rgb;
+    float lod = 0.5 * log2(max(max(dot(px, px), dot(py, py)), 1e-12));
+    if (inside && lod < u_imagery_overview_lod) {
+      vec3 w = textureLod(u_imagery_window, p / vec2(u_imagery_window_size), 0.0).rgb;
+      if (lod <= 0.0) return w;
+      return mix(w, textureLod(u_imagery, uv, 0.0).rgb, lod / u_imagery_overview_lod);
+    }
     return textureGrad(u_imagery, uv, px / vec2(u_imagery_full_size), py / vec2(u_imagery_full_size)).rgb;
   }
   return texture(u_imagery, uv).rgb;

@@ -5,8 +5,8 @@
 //     times finer: red the height, green and blue a pixel-level pattern (so a
 //     misplaced or resampled pixel shows).
 //   imagery_tool diff A.png B.png
-//     prints "max M differing N of T" (largest channel difference, pixels
-//     that differ at all, pixels).
+//     prints "max M differing N of T over8 K" (largest channel difference,
+//     pixels that differ at all, pixels, pixels that differ by more than 8).
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
@@ -74,15 +74,16 @@ int diff(const char* a_path, const char* b_path) {
   const auto a = read_png(a_path, aw, ah, ab), b = read_png(b_path, bw, bh, bb);
   if (a.empty() || a.size() != b.size() || aw != bw) return std::fprintf(stderr, "images differ in size\n"), 1;
   int worst = 0;
-  long long differing = 0;
+  long long differing = 0, over8 = 0;
   const std::size_t plane = std::size_t(aw) * ah;
   for (std::size_t p = 0; p < plane; ++p) {
     int d = 0;
     for (int c = 0; c < ab; ++c) d = std::max(d, std::abs(int(a[c * plane + p]) - int(b[c * plane + p])));
     worst = std::max(worst, d);
     differing += d > 0;
+    over8 += d > 8;
   }
-  std::printf("max %d differing %lld of %zu\n", worst, differing, plane);
+  std::printf("max %d differing %lld of %zu over8 %lld\n", worst, differing, plane, over8);
   return 0;
 }
 

@@ -138,6 +138,7 @@ class TerrainScene {
   gl::Texture imagery_tex_;  // empty without imagery
   double upload_ms_ = 0.0;
   std::int64_t imagery_uncovered_ = 0;
+  int imagery_overview_width_ = 0;  // the imagery texture's width (an overview's, with an imagery window)
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   mutable std::unique_ptr<HeightWindowTexture> height_window_;  // see enable_height_window()
   mutable std::unique_ptr<ImageryWindowTexture> imagery_window_;  // see imagery_window()
