@@ -66,7 +66,8 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     imagery_uncovered_ = img.uncovered;
-    imagery_overview_width_ = img.width;
+    imagery_overview_step_ = img.full_step;
+    imagery_overview_span_ = glm::ivec2(img.width, img.height) * img.full_step;
     if (!img.full_rgb.empty())  // finer than one texture: full resolution in a window
       imagery_window_ = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height,
                                                                std::min(kDefaultHeightWindow, limit),
@@ -104,7 +105,9 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
     glBindTextureUnit(6, imagery_window_->id());
     p.set("u_imagery_window", 6);
     p.set("u_imagery_full_size", imagery_window_->full_size());
-    p.set("u_imagery_overview_lod", std::log2(float(imagery_window_->full_size().x) / float(imagery_overview_width_)));
+    p.set("u_imagery_overview_lod", std::log2(float(imagery_overview_step_)));
+    // The overview spans whole blocks: a little more than the footprint.
+    p.set("u_imagery_overview_scale", glm::vec2(imagery_window_->full_size()) / glm::vec2(imagery_overview_span_));
   }
   p.set("u_imagery_window_origin", imagery_windowed ? imagery_window_->origin() : glm::ivec2(0));
   p.set("u_imagery_window_size", imagery_windowed ? imagery_window_->size() : glm::ivec2(0));

@@ -138,7 +138,10 @@ class TerrainScene {
   gl::Texture imagery_tex_;  // empty without imagery
   double upload_ms_ = 0.0;
   std::int64_t imagery_uncovered_ = 0;
-  int imagery_overview_width_ = 0;  // the imagery texture's width (an overview's, with an imagery window)
+  // With an imagery window: the overview's step and the full-resolution
+  // pixels it spans (whole steps, so at least the full size).
+  int imagery_overview_step_ = 1;
+  glm::ivec2 imagery_overview_span_{0};
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   mutable std::unique_ptr<HeightWindowTexture> height_window_;  // see enable_height_window()
   mutable std::unique_ptr<ImageryWindowTexture> imagery_window_;  // see imagery_window()

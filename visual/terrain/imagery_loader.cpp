@@ -34,19 +34,25 @@ std::vector<std::uint8_t> read_rgb(GDALDatasetH ds, const std::string& path) {
   return rgb;
 }
 
-// Box-averages a south-first RGB raster by `step` (its sides are multiples of it).
+// Box-averages a south-first w x h RGB raster by `step`: ceil(w / step) x
+// ceil(h / step) pixels, each the mean of the pixels of its block that exist.
 std::vector<std::uint8_t> box_average(const std::vector<std::uint8_t>& rgb, int w, int h, int step) {
-  const int ow = w / step, oh = h / step, n = step * step;
+  const int ow = (w + step - 1) / step, oh = (h + step - 1) / step;
   std::vector<std::uint8_t> out(std::size_t(ow) * oh * 3);
   std::vector<std::uint32_t> sums(std::size_t(ow) * 3);
   for (int oy = 0; oy < oh; ++oy) {
     std::fill(sums.begin(), sums.end(), 0u);
-    for (int y = oy * step; y < (oy + 1) * step; ++y) {
+    const int y1 = std::min(h, (oy + 1) * step);
+    for (int y = oy * step; y < y1; ++y) {
       const std::uint8_t* row = rgb.data() + std::size_t(y) * w * 3;
-      for (int x = 0; x < ow * step; ++x)
+      for (int x = 0; x < w; ++x)
         for (int c = 0; c < 3; ++c) sums[std::size_t(x / step) * 3 + c] += row[std::size_t(x) * 3 + c];
     }
-    for (std::size_t i = 0; i < sums.size(); ++i) out[std::size_t(oy) * ow * 3 + i] = std::uint8_t((sums[i] + n / 2) / n);
+    for (int ox = 0; ox < ow; ++ox) {
+      const std::uint32_t n = std::uint32_t(y1 - oy * step) * std::uint32_t(std::min(w, (ox + 1) * step) - ox * step);
+      for (int c = 0; c < 3; ++c)
+        out[(std::size_t(oy) * ow + ox) * 3 + c] = std::uint8_t((sums[std::size_t(ox) * 3 + c] + n / 2) / n);
+    }
   }
   return out;
 }
@@ -90,11 +96,13 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
       out.width = int(want_x);
       out.height = int(want_y);
     } else {
-      // Full resolution, rounded to a multiple of the overview's step so the
-      // overview's pixels are exact step x step blocks of it.
-      out.full_step = int(std::ceil(std::max(want_x, want_y) / max_side));
-      out.width = std::clamp(int(std::lround(want_x / out.full_step)), 1, max_side);
-      out.height = std::clamp(int(std::lround(want_y / out.full_step)), 1, max_side);
+      // Full resolution as wanted (not rounded: that would resample every
+      // pixel); the overview's step the smallest that fits the limit.
+      out.full_w = int(want_x);
+      out.full_h = int(want_y);
+      out.full_step = (std::max(out.full_w, out.full_h) + max_side - 1) / max_side;
+      out.width = (out.full_w + out.full_step - 1) / out.full_step;
+      out.height = (out.full_h + out.full_step - 1) / out.full_step;
     }
     use = gdal::warp(h, "", {"-of", "MEM", "-t_srs", hf.georef->crs_wkt, "-te", number_arg(b[0]), number_arg(b[1]),
                              number_arg(b[2]), number_arg(b[3]), "-ts", std::to_string(out.full_width()),

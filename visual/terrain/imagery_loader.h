@@ -19,18 +19,20 @@ namespace ig::terrain {
 
 struct Imagery {
   // What one texture holds over the whole footprint: the image, or beyond
-  // the limit its overview (each pixel the mean of full_step x full_step
-  // full-resolution pixels, so both grids share their outer edges).
+  // the limit its overview: pixel k the mean of full-resolution pixels
+  // [k * full_step, (k + 1) * full_step) (fewer in the last row and column
+  // when the full size is not a multiple), so the overview spans
+  // width * full_step >= full_width() full pixels.
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;  // width * height * 3, row 0 = SOUTH (as the DEM)
   bool warped = false;            // reprojected / resampled onto the DEM's footprint
   std::int64_t uncovered = 0;     // full-resolution pixels of the footprint the image does not cover (grey)
-  // Beyond the limit only: the full resolution (full_step * width x
-  // full_step * height), row 0 = south; empty when the image fits.
-  int full_step = 1;
+  // Beyond the limit only: the full resolution over the footprint, row 0 =
+  // south; empty when the image fits (then full size = width x height).
+  int full_step = 1, full_w = 0, full_h = 0;
   std::vector<std::uint8_t> full_rgb;
-  int full_width() const { return width * full_step; }
-  int full_height() const { return height * full_step; }
+  int full_width() const { return full_step > 1 ? full_w : width; }
+  int full_height() const { return full_step > 1 ? full_h : height; }
 };
 
 // At most this many bytes of full-resolution imagery are held (RGB, in

@@ -35,6 +35,8 @@ TEST(ImageryWindowTexture, ToroidalUpdatesMatchAFullUpload) {
   img.width = kDemW;
   img.height = kDemH;
   img.full_step = kStep;
+  img.full_w = kDemW * kStep;
+  img.full_h = kDemH * kStep;
   const int fw = img.full_width(), fh = img.full_height();
   img.full_rgb.resize(static_cast<std::size_t>(fw) * fh * 3);
   std::mt19937 rng(11);
