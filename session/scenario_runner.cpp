@@ -108,6 +108,13 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
 }
 
 void ScenarioRunner::prefetch_first_window() {
+  if (scene_->imagery_window()) {
+    // Imagery beyond one texture: its window filled around the first pose at
+    // load (4096^2 RGB is 50 MB); the first frame moves it by what Level1's
+    // centre is off.
+    const glm::dvec3 p = pose_at(0.0).position - scene_->world_origin();
+    scene_->place_imagery_window(glm::ivec2(int(p.x / heightfield_.spacing_x_m), int(p.y / heightfield_.spacing_y_m)));
+  }
   const render::HeightWindowTexture* window = scene_->height_window();
   if (!heightfield_.paged || !window) return;
   // The window around the first pose, loaded before the first frame (it is

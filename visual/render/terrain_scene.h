@@ -104,6 +104,11 @@ class TerrainScene {
   // const: the window is a cache of heights the scene already serves.
   long long follow_window(glm::ivec2 centre) const;
   const HeightWindowTexture* height_window() const { return height_window_.get(); }
+  // Places the imagery window (if any) on sample `centre` ahead of the first
+  // frame, so its first fill is part of the load, not of a frame.
+  void place_imagery_window(glm::ivec2 centre) const {
+    if (imagery_window_) imagery_window_->centre_on_sample(centre);
+  }
   // Paged heights (terrain/paged_heights.h): asks the tile cache's background
   // thread for the tiles within half a tile of each point (terrain-local
   // metres), e.g. where the view rays hit, so next frame's ray casts find
