@@ -43,8 +43,6 @@ class HorizonCulling {
   int mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m, const std::vector<Box>& boxes,
                   std::vector<std::uint8_t>& hidden);
 
-  const TerrainFloors& floors() const { return floors_; }
-
  private:
   // A rectangle's directions seen from the eye, in pseudo-angle units [0, 4)
   // (lo may be below 0 or hi above 4: the span wraps), and its horizontal distances.
