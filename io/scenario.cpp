@@ -259,7 +259,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   const std::string path = "terrain";
   require_object(j, path);
   check_keys(j, path, {"file", "encoding", "scale", "offset", "spacing_m", "generator", "height_window", "texture_limit",
-                     "memory_budget_mb"});
+                     "memory_budget_mb", "wait_for_pages"});
   const bool has_file = j.contains("file");
   const bool has_gen = j.contains("generator");
   if (has_file && has_gen) fail(path, "exactly one of \"file\" or \"generator\" may be given, not both");
@@ -270,6 +270,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
     t.height_window = static_cast<int>(get_integer(j["height_window"], child(path, "height_window"), 0, 16384));
   if (j.contains("texture_limit"))
     t.texture_limit = static_cast<int>(get_integer(j["texture_limit"], child(path, "texture_limit"), 0, 1 << 20));
+  if (j.contains("wait_for_pages")) t.wait_for_pages = get_bool(j["wait_for_pages"], child(path, "wait_for_pages"));
   if (j.contains("memory_budget_mb"))
     t.memory_budget_mb =
         static_cast<int>(get_integer(j["memory_budget_mb"], child(path, "memory_budget_mb"), 1, 1 << 20));

@@ -37,6 +37,11 @@ struct TerrainSpec : options::DemLoadOptions {
   // beyond it is drawn from an overview plus the height window, as beyond
   // the GL limit (tests do that on a small DEM).
   int texture_limit = 0;
+  // Paged heights (over memory_budget_mb): false (live, default) keeps
+  // Level1 on its last square while the tiles of a new one are read, so no
+  // frame waits on I/O; true makes a frame wait for them instead, so a
+  // replay's pictures do not depend on disk speed (regression captures).
+  bool wait_for_pages = false;
 };
 
 struct RenderSpec {

@@ -118,6 +118,10 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         {"page_ins", page_ins_},
         {"page_ins_per_s", wall_s > 0 ? double(page_ins_) / wall_s : 0.0},
         {"evictions", st.evictions},
+        // Live (wait_for_pages false): reads a frame did not wait for (the
+        // tile queued instead; Level1 kept its square: frames.csv level1_held).
+        {"wait_for_pages", runner.scene().wait_for_pages()},
+        {"deferred_reads", st.deferred},
     };
   }
   for (auto it = extra.begin(); extra.is_object() && it != extra.end(); ++it) summary[it.key()] = it.value();

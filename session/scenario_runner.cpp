@@ -51,6 +51,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit);
   scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
   scene_->enable_height_window(scenario_.terrain.height_window);
+  scene_->set_wait_for_pages(scenario_.terrain.wait_for_pages);
 
   for (const auto& spec : scenario_.channels) {
     ChannelView v;

@@ -53,7 +53,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
       if(src STREQUAL "tiles")
         set(terrain "${OUT}/tiles\"")
       elseif(src STREQUAL "tiles_paged")
-        set(terrain "${OUT}/tiles\", \"memory_budget_mb\": 48")
+        set(terrain "${OUT}/tiles\", \"memory_budget_mb\": 48, \"wait_for_pages\": true")
       endif()
       file(WRITE "${OUT}/${src}.json" "{\"name\": \"tiles_${src}\", \"terrain\": {\"file\": \"${terrain}},
   \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},

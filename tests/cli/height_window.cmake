@@ -9,7 +9,9 @@
 #    baseline method is refused with a message naming it and the limit;
 #  * paged / paged_overview: with terrain.memory_budget_mb 16 the heights
 #    (64 MB) are paged from the file by the tile cache (terrain/paged_heights.h)
-#    and the picture is byte-identical to the whole-array run's, with a
+#    and the picture is byte-identical to the whole-array run's (with
+#    terrain.wait_for_pages: frames wait for tiles, as a replay for
+#    comparison must; live, Level1 would keep its square meanwhile), with a
 #    256-sample window (paged) and beyond a texture limit of 2049
 #    (paged_overview); frames.csv has page_waits / page_ins and
 #    summary.json a "paging" block.
@@ -51,9 +53,14 @@ if(CMAKE_SCRIPT_MODE_FILE)
     if(CASE STREQUAL "paged_overview")
       set(extra "\"texture_limit\": 2049, ")
     endif()
-    foreach(budget 2048 16)
+    foreach(budget 2048 16 16live)
+      string(REGEX REPLACE "live" "" mb "${budget}")
+      set(wait "true")
+      if(budget MATCHES "live")
+        set(wait "false")
+      endif()
       file(WRITE "${OUT}/b${budget}.json" "{\"name\": \"budget_${budget}\",
-  \"terrain\": {\"file\": \"${DEM}\", ${extra}\"height_window\": 256, \"memory_budget_mb\": ${budget}},
+  \"terrain\": {\"file\": \"${DEM}\", ${extra}\"height_window\": 256, \"memory_budget_mb\": ${mb}, \"wait_for_pages\": ${wait}},
   \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
   \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
     {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
@@ -81,6 +88,21 @@ if(CMAKE_SCRIPT_MODE_FILE)
     file(STRINGS "${OUT}/run_16/frames.csv" header LIMIT_COUNT 1)
     if(NOT header MATCHES "page_waits,page_ins")
       message(FATAL_ERROR "frames.csv of a paged run has no page_waits / page_ins columns: ${header}")
+    endif()
+    # Live: the same flight without waiting for tiles (Level1 keeps its
+    # square meanwhile; which frames do depends on the disk, so only the
+    # bookkeeping is checked here; visual/render/test/paged_level1_hold_test.cpp
+    # checks the hold itself with gated reads).
+    file(READ "${OUT}/run_16live/summary.json" summary)
+    string(JSON live_wait GET "${summary}" paging wait_for_pages)
+    string(JSON deferred GET "${summary}" paging deferred_reads)
+    message("paged, live: deferred reads ${deferred}")
+    if(live_wait OR NOT deferred GREATER_EQUAL 0)
+      message(FATAL_ERROR "summary.json of a live paged run: wait_for_pages ${live_wait}, deferred_reads '${deferred}'")
+    endif()
+    file(STRINGS "${OUT}/run_16live/frames.csv" header LIMIT_COUNT 1)
+    if(NOT header MATCHES "level1_held")
+      message(FATAL_ERROR "frames.csv of a live paged run has no level1_held column: ${header}")
     endif()
     file(STRINGS "${OUT}/run_2048/frames.csv" header LIMIT_COUNT 1)
     if(header MATCHES "page_waits")

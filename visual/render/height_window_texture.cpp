@@ -9,7 +9,7 @@ HeightWindowTexture::HeightWindowTexture(const terrain::Heightfield& hf, int siz
 
 void HeightWindowTexture::prefetch_around(glm::ivec2 centre) const {
   if (!hf_.paged) return;
-  const glm::ivec2 o = tex_.window().origin_for(centre);
+  const glm::ivec2 o = origin_for(centre);
   const int margin = hf_.paged->cache->tile_size();
   const glm::ivec2 s = size();
   hf_.paged->cache->request(o.x - margin, o.y - margin, s.x + 2 * margin, s.y + 2 * margin);

@@ -36,6 +36,8 @@ class HeightWindowTexture {
   // centred on `centre` and one tile around it (centre_on does it too).
   void prefetch_around(glm::ivec2 centre) const;
 
+  // Where the window's first sample would be, centred on `centre`.
+  glm::ivec2 origin_for(glm::ivec2 centre) const { return tex_.window().origin_for(centre); }
   GLuint id() const { return tex_.id(); }
   bool placed() const { return tex_.placed(); }  // centred at least once
   glm::ivec2 origin() const { return tex_.origin(); }

@@ -153,6 +153,18 @@ void TerrainScene::prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) const {
   cache.request(lo.x - t, lo.y - t, hi.x - lo.x + 1 + 2 * t, hi.y - lo.y + 1 + 2 * t);
 }
 
+bool TerrainScene::samples_resident(glm::ivec2 lo, glm::ivec2 hi) const {
+  if (!heightfield_.paged) return true;
+  return heightfield_.paged->cache->resident_rect(lo.x, lo.y, hi.x - lo.x + 1, hi.y - lo.y + 1);
+}
+
+bool TerrainScene::window_ready(glm::ivec2 centre) const {
+  if (!height_window_ || !heightfield_.paged) return true;
+  height_window_->prefetch_around(centre);
+  const glm::ivec2 o = height_window_->origin_for(centre), s = height_window_->size();
+  return samples_resident(o, o + s - 1);
+}
+
 long long TerrainScene::follow_window(glm::ivec2 centre) const {
   if (imagery_window_) imagery_window_->centre_on_sample(centre);
   return height_window_ ? height_window_->centre_on(centre) : 0;

@@ -116,6 +116,18 @@ class TerrainScene {
   void prefetch_heights(const std::vector<glm::dvec3>& points_m) const;
   // The same for samples [lo, hi] (inclusive) and one tile around them.
   void prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) const;
+  // Paged heights: whether a frame may wait for tiles (a deterministic
+  // replay) or must not (live: Level1 keeps its square until they are in;
+  // render/twolevel_method.cpp). Default false.
+  bool wait_for_pages() const { return wait_for_pages_; }
+  void set_wait_for_pages(bool wait) { wait_for_pages_ = wait; }
+  // Samples [lo, hi] (inclusive, clipped to the DEM) are all readable
+  // without waiting on I/O (always true for heights held whole).
+  bool samples_resident(glm::ivec2 lo, glm::ivec2 hi) const;
+  // The same for what follow_window(centre) would read: the height window
+  // centred there (true without a window or paging); asks the background
+  // thread for it (and one tile around) too.
+  bool window_ready(glm::ivec2 centre) const;
 
   // World position of sample (0, 0) at height 0 (default: the origin).
   const glm::dvec3& world_origin() const { return world_origin_; }
@@ -139,6 +151,7 @@ class TerrainScene {
   gl::Texture height_tex_;
   int overview_step_ = 1;
   int texture_limit_ = 0;
+  bool wait_for_pages_ = false;
   std::unique_ptr<terrain::Heightfield> overview_;  // only beyond the texture limit
   gl::Texture imagery_tex_;  // empty without imagery
   double upload_ms_ = 0.0;

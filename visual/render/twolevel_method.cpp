@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include "gl/gl_context.h"
@@ -15,6 +16,7 @@
 #include "lod/terrain_floors.h"
 #include "render/scene_level0.h"
 #include "terrain/back_faces_hidden.h"
+#include "terrain/height_tile_cache.h"
 
 namespace ig::render {
 namespace {
@@ -181,7 +183,7 @@ std::vector<std::string> TwoLevelMethod::pass_names() const {
 
 std::vector<std::string> TwoLevelMethod::column_names() const {
   return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit",
-          "level0_hidden_clusters", "level1_hidden_blocks"};
+          "level0_hidden_clusters", "level1_hidden_blocks", "level1_held"};
 }
 
 TwoLevelMethod::SizeMeshes& TwoLevelMethod::meshes_for(int n, int band_w) {
@@ -205,6 +207,60 @@ double TwoLevelMethod::read_previous_ratio() {
   return terrain > 0 ? double(level1) / double(terrain) : -1.0;
 }
 
+bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm::dvec2& eye) {
+  const auto& hf = scene_.heightfield();
+  // Paged heights (issue 16), live (TerrainScene::wait_for_pages() false):
+  // after the first frame nothing here waits on a
+  // tile. A read of one that is not resident queues it and throws; so does
+  // a square whose heights (square, band, height window) are not all in.
+  // Either way Level1 keeps last frame's square until they are.
+  std::optional<terrain::HeightTileCache::NoWait> no_wait;
+  if (hf.paged && n_ > 0 && !scene_.wait_for_pages()) no_wait.emplace();
+  try {
+    const lod::LookAtPoint e = lod::find_look_at_point(hf, pyramid_, camera.position, camera.forward(), camera.up(),
+                                                       camera.earth_radius_m);
+    // Snap E to a whole sample and keep the square inside the DEM.
+    const glm::ivec2 ec{int(std::lround(e.point.x / hf.spacing_x_m)), int(std::lround(e.point.y / hf.spacing_y_m))};
+    const double eye_agl =
+        options_.eye_guard ? camera.position.z - hf.sample_bilinear(camera.position.x, camera.position.y) : 0.0;
+    int n = 0;
+    std::vector<glm::dvec3> hits;
+    if (options_.predict_size && terrain_visible_) {
+      // R for every ladder size on a 12 x 9 grid of view rays (about 0.1-0.3 ms).
+      constexpr int kRaysX = 12, kRaysY = 9;
+      prediction_rays_.clear();
+      for (int y = 0; y < kRaysY; ++y)
+        for (int x = 0; x < kRaysX; ++x)
+          prediction_rays_.push_back(camera.pixel_ray((x + 0.5) * viewport_.x / kRaysX,
+                                                      (y + 0.5) * viewport_.y / kRaysY, viewport_.x, viewport_.y));
+      auto p = lod::predict_level1_coverage(hf, pyramid_, camera.position, prediction_rays_, camera.far_m, ec,
+                                            controller_.ladder());
+      scene_.prefetch_heights(p.hits);  // paged heights: keep the tiles under the view resident
+      n = controller_.update(ratio, p.ratio);
+    } else {
+      n = controller_.update(ratio);
+    }
+    lod::Level1Placement place{n, ec, false};
+    if (options_.eye_guard)
+      place = lod::guard_level1_for_eye(place, eye, eye_agl, level0_.max_error_m, controller_.ladder(),
+                                        {hf.width, hf.height});
+    const glm::ivec2 origin = lod::level1_square_origin(place.centre, place.n, hf.width, hf.height);
+    if (no_wait) {
+      const int band = lod::band_width_samples(level0_resolution_, options_.alpha, place.n, options_.band_stride);
+      const glm::ivec2 lo = origin - band, hi = origin + (place.n - 1) + band;
+      scene_.prefetch_samples(lo, hi);
+      if (!scene_.samples_resident(lo, hi) || !scene_.window_ready(origin + (place.n - 1) / 2)) return false;
+    }
+    look_at_ = e;
+    eye_guarded_ = place.eye_guarded;
+    n_ = place.n;
+    origin_ = origin;
+    return true;
+  } catch (const terrain::TileNotResident&) {
+    return false;
+  }
+}
+
 void TwoLevelMethod::update(const Camera& camera) {
   const auto& hf = scene_.heightfield();
   const Frustum frustum = frustum_of(camera);
@@ -214,37 +270,11 @@ void TwoLevelMethod::update(const Camera& camera) {
   const double ratio = read_previous_ratio();
   if (ratio >= 0.0) last_ratio_ = ratio;
 
-  look_at_ = lod::find_look_at_point(hf, pyramid_, camera.position, camera.forward(), camera.up(),
-                                     camera.earth_radius_m);
-  // Snap E to a whole sample and keep the square inside the DEM.
-  int ec_i = int(std::lround(look_at_.point.x / hf.spacing_x_m));
-  int ec_j = int(std::lround(look_at_.point.y / hf.spacing_y_m));
-  int n = 0;
-  if (options_.predict_size && terrain_visible_) {
-    // R for every ladder size on a 12 x 9 grid of view rays (about 0.1-0.3 ms).
-    constexpr int kRaysX = 12, kRaysY = 9;
-    prediction_rays_.clear();
-    for (int y = 0; y < kRaysY; ++y)
-      for (int x = 0; x < kRaysX; ++x)
-        prediction_rays_.push_back(camera.pixel_ray((x + 0.5) * viewport_.x / kRaysX, (y + 0.5) * viewport_.y / kRaysY,
-                                                    viewport_.x, viewport_.y));
-    const auto p = lod::predict_level1_coverage(hf, pyramid_, camera.position, prediction_rays_, camera.far_m,
-                                                {ec_i, ec_j}, controller_.ladder());
-    scene_.prefetch_heights(p.hits);  // paged heights: keep the tiles under the view resident
-
-    n = controller_.update(ratio, p.ratio);
-  } else {
-    n = controller_.update(ratio);
-  }
   const glm::dvec2 eye(camera.position.x / hf.spacing_x_m, camera.position.y / hf.spacing_y_m);
-  lod::Level1Placement place{n, {ec_i, ec_j}, false};
-  if (options_.eye_guard)
-    place = lod::guard_level1_for_eye(place, eye, camera.position.z - hf.sample_bilinear(camera.position.x, camera.position.y),
-                                      level0_.max_error_m, controller_.ladder(), {hf.width, hf.height});
-  eye_guarded_ = place.eye_guarded;
-  n = n_ = place.n;
-  origin_ = lod::level1_square_origin(place.centre, n, hf.width, hf.height);
-  scene_.follow_window(origin_ + (n - 1) / 2);  // the height window, if any, on Level1 (terrain_scene.h)
+  scene_.prefetch_samples(glm::ivec2(eye), glm::ivec2(eye));  // paged heights: the ground under the eye
+  level1_held_ = !place_level1(camera, ratio, eye);
+  scene_.follow_window(origin_ + (n_ - 1) / 2);  // the height window, if any, on Level1 (terrain_scene.h)
+  const int n = n_;
   band_w_ = lod::band_width_samples(level0_resolution_, options_.alpha, n, options_.band_stride);
 
   // Paged heights: Level1's square and band (their bounds read the finest
@@ -261,8 +291,14 @@ void TwoLevelMethod::update(const Camera& camera) {
   // Level1 does not hold the eye): lod/horizon_culling.h.
   const bool eye_in_square = eye.x >= origin_.x && eye.y >= origin_.y && eye.x <= origin_.x + n - 1 &&
                              eye.y <= origin_.y + n - 1;
-  const bool eye_above = terrain::back_faces_hidden(hf, camera.position) &&
-                         (eye_in_square || camera.position.z > level0_heights_.height_at(eye.x, eye.y));
+  bool eye_above = false;
+  try {  // paged heights: no wait for the ground under the eye; not in yet, no culling this frame
+    std::optional<terrain::HeightTileCache::NoWait> no_wait;
+    if (hf.paged && !scene_.wait_for_pages()) no_wait.emplace();
+    eye_above = terrain::back_faces_hidden(hf, camera.position) &&
+                (eye_in_square || camera.position.z > level0_heights_.height_at(eye.x, eye.y));
+  } catch (const terrain::TileNotResident&) {
+  }
   int hidden_count = 0;
   lod::MarkHidden occlusion;
   if (horizon_ && eye_above)
@@ -513,7 +549,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
                    {"e_y", look_at_.point.y},
                    {"e_hit", look_at_.hit ? 1.0 : 0.0},
                    {"level0_hidden_clusters", double(level0_hidden_clusters_)},
-                   {"level1_hidden_blocks", double(level1_hidden_blocks_)}};
+                   {"level1_hidden_blocks", double(level1_hidden_blocks_)},
+                   {"level1_held", level1_held_ ? 1.0 : 0.0}};
   return stats;
 }
 

@@ -57,7 +57,9 @@ class TwoLevelMethod final : public TerrainMethod {
   const lod::LookAtPoint& look_at() const { return look_at_; }
   glm::ivec2 level1_origin() const { return origin_; }
   double last_ratio() const { return last_ratio_; }
-  bool eye_guarded() const { return eye_guarded_; }
+  bool eye_guarded() const { return eye_guarded_; }  // this frame's Level1 size / centre came from the eye guard
+  // Paged heights: this frame's Level1 is last frame's, the new one's heights not being resident yet.
+  bool level1_held() const { return level1_held_; }
   const terrain::HeightPyramid& pyramid() const { return pyramid_; }
   const lod::Level0Mesh& level0() const { return level0_; }
   // Level0's drawn height at a sample position (the walls use it; so do "as drawn" host answers).
@@ -75,6 +77,10 @@ class TwoLevelMethod final : public TerrainMethod {
   void upload_beta_template(int n, int band_w);
   void update_walls(SizeMeshes& meshes, int n);
   double read_previous_ratio();
+  // Sets look_at_, n_, origin_, eye_guarded_ for this frame; false when
+  // Level1 keeps last frame's square because paged heights it needs are not
+  // resident yet (see the .cpp).
+  bool place_level1(const Camera& camera, double ratio, const glm::dvec2& eye);
 
   const TerrainScene& scene_;
   TwoLevelOptions options_;
@@ -105,7 +111,8 @@ class TwoLevelMethod final : public TerrainMethod {
   int band_w_ = 0;
   double last_ratio_ = -1.0;
   bool eye_guarded_ = false;
-  int n_ = 0;  // Level1 vertices a side used this frame  // this frame's Level1 size / centre came from the eye guard
+  int n_ = 0;  // Level1 vertices a side used this frame (0 before the first)
+  bool level1_held_ = false;  // this frame kept last frame's square (paged heights not in yet)
   // (eye guard, band width, blocks: lod/level1_selection.h)
   bool terrain_visible_ = false, band_visible_ = false;
   glm::ivec4 band_rect_{0};  // the band's screen rectangle (x0, y0, x1, y1), from update()

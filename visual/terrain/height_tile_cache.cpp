@@ -6,6 +6,12 @@
 #include <stdexcept>
 
 namespace ig::terrain {
+namespace {
+thread_local bool no_wait = false;
+}  // namespace
+
+HeightTileCache::NoWait::NoWait() : outer_(no_wait) { no_wait = true; }
+HeightTileCache::NoWait::~NoWait() { no_wait = outer_; }
 
 HeightTileCache::HeightTileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader)
     : width_(width),
@@ -62,6 +68,15 @@ HeightTileCache::TilePtr HeightTileCache::get(int k) const {
     if (auto it = tiles_.find(k); it != tiles_.end()) {
       lru_.splice(lru_.begin(), lru_, it->second.lru);
       return it->second.tile;
+    }
+    if (no_wait) {  // queue it next for the background thread; never block
+      if (!loading_.count(k)) {
+        queue_.erase(std::remove(queue_.begin(), queue_.end(), k), queue_.end());
+        queue_.push_front(k);
+        changed_.notify_all();
+      }
+      ++stats_.deferred;
+      throw TileNotResident();
     }
     if (!counted) {
       ++stats_.misses;
@@ -179,6 +194,16 @@ void HeightTileCache::wait_idle() const {
 bool HeightTileCache::resident(int tx, int ty) const {
   std::lock_guard lock(mutex_);
   return tiles_.count(key(tx, ty)) > 0;
+}
+
+bool HeightTileCache::resident_rect(int x, int y, int w, int h) const {
+  const int x0 = std::max(x, 0), y0 = std::max(y, 0);
+  const int x1 = std::min(x + w, width_) - 1, y1 = std::min(y + h, height_) - 1;
+  std::lock_guard lock(mutex_);
+  for (int ty = y0 / tile_; ty <= y1 / tile_ && x1 >= x0; ++ty)
+    for (int tx = x0 / tile_; tx <= x1 / tile_; ++tx)
+      if (!tiles_.count(key(tx, ty))) return false;
+  return true;
 }
 
 HeightTileCache::Stats HeightTileCache::stats() const {

@@ -20,6 +20,11 @@
 //    background thread's read of that tile). Each such tile is a "miss",
 //    counted in Stats::misses: the frame log's page_waits.
 //
+// A third, for callers that must not block (a frame's look-at ray cast):
+//  * inside a NoWait scope on the calling thread, at() / read_rect() of a
+//    tile that is not resident queue it first for the background thread and
+//    throw TileNotResident instead of waiting (Stats::deferred; not a miss).
+//
 // Eviction: least recently used first, after every insertion, until the
 // resident bytes are within the budget (at least one tile stays, so a
 // budget smaller than a tile still works, one tile at a time). Tiles are
@@ -35,6 +40,7 @@
 #include <list>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <unordered_map>
@@ -42,6 +48,11 @@
 #include <vector>
 
 namespace ig::terrain {
+
+// What at() / read_rect() throw inside a HeightTileCache::NoWait scope.
+struct TileNotResident : std::runtime_error {
+  TileNotResident() : std::runtime_error("height tile not resident") {}
+};
 
 class HeightTileCache {
  public:
@@ -55,9 +66,23 @@ class HeightTileCache {
     std::int64_t misses = 0;       // tiles a caller had to wait for (at / read_rect)
     std::int64_t prefetched = 0;   // tiles the background thread loaded
     std::int64_t evictions = 0;
+    std::int64_t deferred = 0;     // TileNotResident thrown in a NoWait scope
     std::size_t resident_bytes = 0;
     std::size_t peak_resident_bytes = 0;  // after eviction, i.e. what the budget bounds
     int resident_tiles = 0;
+  };
+
+  // On this thread while it lives: reads of tiles that are not resident
+  // throw TileNotResident (after queueing them) instead of blocking. Nests.
+  class NoWait {
+   public:
+    NoWait();
+    ~NoWait();
+    NoWait(const NoWait&) = delete;
+    NoWait& operator=(const NoWait&) = delete;
+
+   private:
+    bool outer_;
   };
 
   HeightTileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader);
@@ -83,6 +108,8 @@ class HeightTileCache {
   // Blocks until the background thread has nothing queued or loading.
   void wait_idle() const;
   bool resident(int tx, int ty) const;
+  // Every tile of [x, x + w) x [y, y + h) (clipped to the DEM) is resident.
+  bool resident_rect(int x, int y, int w, int h) const;
   Stats stats() const;
   // The last background read error ("" if none).
   std::string last_error() const;

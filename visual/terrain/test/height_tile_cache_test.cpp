@@ -85,6 +85,35 @@ TEST(HeightTileCache, BackgroundThreadLoadsRequestedTilesSoReadsDoNotWait) {
   EXPECT_EQ(reads.load(), 12);
 }
 
+TEST(HeightTileCache, NoWaitScopeThrowsAndQueuesInsteadOfReading) {
+  std::atomic<int> reads{0};
+  HeightTileCache cache(128, 128, 16, 64 * kTileBytes, synthetic(&reads));
+  EXPECT_FALSE(cache.resident_rect(40, 40, 1, 1));
+  {
+    HeightTileCache::NoWait no_wait;
+    EXPECT_THROW(cache.at(40, 40), TileNotResident);
+    std::vector<float> out(20 * 20);
+    {
+      HeightTileCache::NoWait nested;
+    }
+    EXPECT_THROW(cache.read_rect(30, 30, 20, 20, out.data(), 20), TileNotResident);  // still no wait after a nested scope
+  }
+  cache.wait_idle();  // the background thread read what the throws queued
+  EXPECT_EQ(cache.stats().misses, 0);
+  EXPECT_EQ(cache.stats().deferred, 2);
+  EXPECT_TRUE(cache.resident(2, 2));
+  EXPECT_FALSE(cache.resident_rect(30, 30, 20, 20));  // only the first of its 4 tiles was queued
+  {
+    HeightTileCache::NoWait no_wait;
+    EXPECT_EQ(cache.at(40, 40), value(40, 40));  // resident: read, no throw
+  }
+  EXPECT_EQ(cache.at(30, 49), value(30, 49));  // outside the scope: waits (a miss)
+  EXPECT_EQ(cache.stats().misses, 1);
+  cache.request(0, 0, 128, 128);
+  cache.wait_idle();
+  EXPECT_TRUE(cache.resident_rect(-5, -5, 200, 200));  // clipped to the grid
+}
+
 TEST(HeightTileCache, RequestsNeverQueueMoreThanTheBudgetHolds) {
   HeightTileCache cache(256, 256, 16, 5 * kTileBytes, synthetic());
   cache.request(0, 0, 256, 256);  // 256 tiles asked, 5 fit
