@@ -99,6 +99,8 @@ def run_case(ig, name, dem, centre, out_dir, args):
         "terrain_p99_ms": p99([float(r["terrain_ms"]) for r in rows[1:]]),
         "elapsed_s": elapsed,
         "paging": summary.get("paging"),
+        # Live paging: frames whose Level1 kept the last square while tiles were read.
+        "level1_held": sum(1 for r in rows if r.get("level1_held") == "1"),
     }
 
 
@@ -144,7 +146,8 @@ def main():
             pg = r["paging"]
             if pg:
                 heights = "paged, %.0f MB budget, cache peak %.0f MB" % (pg["budget_mb"], pg["peak_resident_mb"])
-                io = "%d (%d tiles waited for)" % (pg["frames_waited_on_io"], pg["page_waits"])
+                io = "%d (%d tiles waited for); Level1 held in %d frames" % (
+                    pg["frames_waited_on_io"], pg["page_waits"], r["level1_held"])
                 rate = "%.1f" % pg["page_ins_per_s"]
             else:
                 heights, io, rate = "whole", "0 (no I/O after load)", "-"

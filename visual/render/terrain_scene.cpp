@@ -33,7 +33,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
       overview_ = std::make_unique<terrain::Heightfield>(*hf.paged->overview);  // built at load
     else
       overview_ = std::make_unique<terrain::Heightfield>(terrain::decimate_heightfield(hf, overview_step_));
-    height_window_ = std::make_unique<HeightWindowTexture>(hf, std::min(kDefaultHeightWindow, limit));
+    windows_[0].height = std::make_unique<HeightWindowTexture>(hf, std::min(kDefaultHeightWindow, limit));
   }
   const terrain::Heightfield& tex = texture_heightfield();
   height_tex_ = gl::create_texture(GL_TEXTURE_2D);
@@ -69,7 +69,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     imagery_overview_step_ = img.full_step;
     imagery_overview_span_ = glm::ivec2(img.width, img.height) * img.full_step;
     if (!img.full_rgb.empty())  // finer than one texture: full resolution in a window
-      imagery_window_ = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height,
+      windows_[0].imagery = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height,
                                                                std::min(kDefaultHeightWindow, limit),
                                                                *imagery_path + ": imagery window");
   }
@@ -82,7 +82,9 @@ Camera TerrainScene::local_camera(const Camera& world) const {
   return c;
 }
 
-void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera) const {
+void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera, int windows) const {
+  const HeightWindowTexture* height_window = windows_[windows].height.get();
+  const ImageryWindowTexture* imagery_window = windows_[windows].imagery.get();
   glBindTextureUnit(0, height_tex_.id());
   p.set("u_height", 0);
   p.set("u_has_imagery", has_imagery() ? 1 : 0);
@@ -91,26 +93,26 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
     p.set("u_imagery", 1);
   }
   // The height window on unit 5 (units 2-4 are the two-level method's).
-  const bool windowed = height_window_ && height_window_->placed();
+  const bool windowed = height_window && height_window->placed();
   if (windowed) {
-    glBindTextureUnit(5, height_window_->id());
+    glBindTextureUnit(5, height_window->id());
     p.set("u_height_window", 5);
   }
-  p.set("u_window_origin", windowed ? height_window_->origin() : glm::ivec2(0));
-  p.set("u_window_size", windowed ? height_window_->size() : glm::ivec2(0));
+  p.set("u_window_origin", windowed ? height_window->origin() : glm::ivec2(0));
+  p.set("u_window_size", windowed ? height_window->size() : glm::ivec2(0));
   p.set("u_overview_step", overview_step_);
   // The imagery window on unit 6.
-  const bool imagery_windowed = imagery_window_ && imagery_window_->placed();
+  const bool imagery_windowed = imagery_window && imagery_window->placed();
   if (imagery_windowed) {
-    glBindTextureUnit(6, imagery_window_->id());
+    glBindTextureUnit(6, imagery_window->id());
     p.set("u_imagery_window", 6);
-    p.set("u_imagery_full_size", imagery_window_->full_size());
+    p.set("u_imagery_full_size", imagery_window->full_size());
     p.set("u_imagery_overview_lod", std::log2(float(imagery_overview_step_)));
     // The overview spans whole blocks: a little more than the footprint.
-    p.set("u_imagery_overview_scale", glm::vec2(imagery_window_->full_size()) / glm::vec2(imagery_overview_span_));
+    p.set("u_imagery_overview_scale", glm::vec2(imagery_window->full_size()) / glm::vec2(imagery_overview_span_));
   }
-  p.set("u_imagery_window_origin", imagery_windowed ? imagery_window_->origin() : glm::ivec2(0));
-  p.set("u_imagery_window_size", imagery_windowed ? imagery_window_->size() : glm::ivec2(0));
+  p.set("u_imagery_window_origin", imagery_windowed ? imagery_window->origin() : glm::ivec2(0));
+  p.set("u_imagery_window_size", imagery_windowed ? imagery_window->size() : glm::ivec2(0));
   // Beyond one texture, sample coordinates reach 2^14 and more: interpolated
   // across Level0's large triangles they lose up to a few hundredths of a
   // sample in float, enough for Level0's clip test against Level1's square to
@@ -132,8 +134,33 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera)
 }
 
 void TerrainScene::enable_height_window(int size) {
-  if (size <= 0 && overview_) size = height_window_ ? height_window_->size().x : kDefaultHeightWindow;
-  height_window_ = size > 0 ? std::make_unique<HeightWindowTexture>(heightfield_, size) : nullptr;
+  auto& first = windows_[0].height;
+  if (size <= 0 && overview_) size = first ? first->size().x : kDefaultHeightWindow;
+  for (Windows& set : windows_)
+    set.height = size > 0 ? std::make_unique<HeightWindowTexture>(heightfield_, size) : nullptr;
+}
+
+int TerrainScene::claim_windows() const {
+  for (std::size_t k = 0; k < windows_in_use_.size(); ++k)
+    if (!windows_in_use_[k]) {
+      windows_in_use_[k] = true;
+      return int(k);
+    }
+  Windows set;  // a new set like the first
+  if (const auto& h = windows_[0].height) set.height = std::make_unique<HeightWindowTexture>(heightfield_, h->size().x);
+  // Imagery windows are not repeated yet (the full image is held by the first).
+  windows_.push_back(std::move(set));
+  windows_in_use_.push_back(true);
+  return int(windows_.size()) - 1;
+}
+
+void TerrainScene::release_windows(int set) const {
+  if (set >= 0 && set < int(windows_in_use_.size())) windows_in_use_[set] = false;
+}
+
+void TerrainScene::place_imagery_window(glm::ivec2 centre) const {
+  for (const Windows& set : windows_)
+    if (set.imagery) set.imagery->centre_on_sample(centre);
 }
 
 void TerrainScene::prefetch_heights(const std::vector<glm::dvec3>& points_m) const {
@@ -158,16 +185,18 @@ bool TerrainScene::samples_resident(glm::ivec2 lo, glm::ivec2 hi) const {
   return heightfield_.paged->cache->resident_rect(lo.x, lo.y, hi.x - lo.x + 1, hi.y - lo.y + 1);
 }
 
-bool TerrainScene::window_ready(glm::ivec2 centre) const {
-  if (!height_window_ || !heightfield_.paged) return true;
-  height_window_->prefetch_around(centre);
-  const glm::ivec2 o = height_window_->origin_for(centre), s = height_window_->size();
+bool TerrainScene::window_ready(int set, glm::ivec2 centre) const {
+  const HeightWindowTexture* window = windows_[set].height.get();
+  if (!window || !heightfield_.paged) return true;
+  window->prefetch_around(centre);
+  const glm::ivec2 o = window->origin_for(centre), s = window->size();
   return samples_resident(o, o + s - 1);
 }
 
-long long TerrainScene::follow_window(glm::ivec2 centre) const {
-  if (imagery_window_) imagery_window_->centre_on_sample(centre);
-  return height_window_ ? height_window_->centre_on(centre) : 0;
+long long TerrainScene::follow_window(int set, glm::ivec2 centre) const {
+  const Windows& w = windows_[set];
+  if (w.imagery) w.imagery->centre_on_sample(centre);
+  return w.height ? w.height->centre_on(centre) : 0;
 }
 
 const terrain::HeightPyramid& TerrainScene::height_pyramid() const {

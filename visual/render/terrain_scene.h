@@ -77,7 +77,7 @@ class TerrainScene {
   // overview and this window holds full resolution around the point
   // follow_window() is given (issue 16); null otherwise. Only methods that
   // call follow_window (twolevel) can draw it.
-  const ImageryWindowTexture* imagery_window() const { return imagery_window_.get(); }
+  const ImageryWindowTexture* imagery_window(int set = 0) const { return windows_[set].imagery.get(); }
   double upload_ms() const { return upload_ms_; }
   // Imagery texels of the DEM's footprint the image did not cover (grey).
   std::int64_t imagery_uncovered() const { return imagery_uncovered_; }
@@ -98,17 +98,23 @@ class TerrainScene {
   // follow_window(), and reads through it (shaders/terrain_shading.frag
   // height_at, shaders/terrain_grid.vert).
   void enable_height_window(int size);
-  // Centres the window on sample `centre` (clamped to the DEM), uploading
-  // what scrolled in; returns the samples uploaded (0 without a window).
-  // The imagery window, if any, follows too (its pixels are not counted).
-  // const: the window is a cache of heights the scene already serves.
-  long long follow_window(glm::ivec2 centre) const;
-  const HeightWindowTexture* height_window() const { return height_window_.get(); }
-  // Places the imagery window (if any) on sample `centre` ahead of the first
-  // frame, so its first fill is part of the load, not of a frame.
-  void place_imagery_window(glm::ivec2 centre) const {
-    if (imagery_window_) imagery_window_->centre_on_sample(centre);
-  }
+  // Each channel's view needs full resolution around its own Level1, so the
+  // windows come in sets, one per method that draws through them (every
+  // channel has its own method): claim_windows() gives a free set's index,
+  // 0 first (the set the scene made), a new set of the same sizes when all
+  // are in use; release_windows() frees it for the next method.
+  int claim_windows() const;
+  void release_windows(int set) const;
+  int window_sets() const { return int(windows_.size()); }
+  // Centres window set `set`'s height window on sample `centre` (clamped to
+  // the DEM), uploading what scrolled in; returns the samples uploaded (0
+  // without a window). Its imagery window, if any, follows too (its pixels
+  // are not counted). const: the windows are caches of what the scene serves.
+  long long follow_window(int set, glm::ivec2 centre) const;
+  const HeightWindowTexture* height_window(int set = 0) const { return windows_[set].height.get(); }
+  // Places every set's imagery window (if any) on sample `centre` ahead of
+  // the first frame, so its first fill is part of the load, not of a frame.
+  void place_imagery_window(glm::ivec2 centre) const;
   // Paged heights (terrain/paged_heights.h): asks the tile cache's background
   // thread for the tiles within half a tile of each point (terrain-local
   // metres), e.g. where the view rays hit, so next frame's ray casts find
@@ -124,10 +130,10 @@ class TerrainScene {
   // Samples [lo, hi] (inclusive, clipped to the DEM) are all readable
   // without waiting on I/O (always true for heights held whole).
   bool samples_resident(glm::ivec2 lo, glm::ivec2 hi) const;
-  // The same for what follow_window(centre) would read: the height window
-  // centred there (true without a window or paging); asks the background
-  // thread for it (and one tile around) too.
-  bool window_ready(glm::ivec2 centre) const;
+  // The same for what follow_window(set, centre) would read: that set's
+  // height window centred there (true without a window or paging); asks the
+  // background thread for it (and one tile around) too.
+  bool window_ready(int set, glm::ivec2 centre) const;
 
   // World position of sample (0, 0) at height 0 (default: the origin).
   const glm::dvec3& world_origin() const { return world_origin_; }
@@ -142,8 +148,8 @@ class TerrainScene {
 
   // Binds the textures and sets the uniforms every terrain program shares
   // (see shaders/terrain.frag and terrain_grid.vert), u_earth_radius_m from
-  // the (local) camera.
-  void bind_common(const gl::ShaderProgram& program, const Camera& camera) const;
+  // the (local) camera; the windows of set `windows` (claim_windows()).
+  void bind_common(const gl::ShaderProgram& program, const Camera& camera, int windows = 0) const;
 
  private:
   const terrain::Heightfield& heightfield_;
@@ -161,8 +167,12 @@ class TerrainScene {
   int imagery_overview_step_ = 1;
   glm::ivec2 imagery_overview_span_{0};
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
-  mutable std::unique_ptr<HeightWindowTexture> height_window_;  // see enable_height_window()
-  mutable std::unique_ptr<ImageryWindowTexture> imagery_window_;  // see imagery_window()
+  struct Windows {
+    std::unique_ptr<HeightWindowTexture> height;    // see enable_height_window()
+    std::unique_ptr<ImageryWindowTexture> imagery;  // see imagery_window()
+  };
+  mutable std::vector<Windows> windows_ = std::vector<Windows>(1);  // see claim_windows()
+  mutable std::vector<bool> windows_in_use_ = std::vector<bool>(1, false);
   glm::dvec3 world_origin_{0.0};
   double earth_radius_m_ = 0.0;
 };

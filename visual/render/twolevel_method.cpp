@@ -172,9 +172,10 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
   empty_vao_ = gl::create_vertex_array();
   for (auto& pair : queries_)
     for (auto& q : pair) q = gl::create_query();
+  windows_ = scene.claim_windows();  // this channel's height (and imagery) window
 }
 
-TwoLevelMethod::~TwoLevelMethod() = default;
+TwoLevelMethod::~TwoLevelMethod() { scene_.release_windows(windows_); }
 
 std::vector<std::string> TwoLevelMethod::pass_names() const {
   if (options_.band_inline) return {"level1", "level0", "count"};  // the band is shaded inside level0
@@ -249,7 +250,7 @@ bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm:
       const int band = lod::band_width_samples(level0_resolution_, options_.alpha, place.n, options_.band_stride);
       const glm::ivec2 lo = origin - band, hi = origin + (place.n - 1) + band;
       scene_.prefetch_samples(lo, hi);
-      if (!scene_.samples_resident(lo, hi) || !scene_.window_ready(origin + (place.n - 1) / 2)) return false;
+      if (!scene_.samples_resident(lo, hi) || !scene_.window_ready(windows_, origin + (place.n - 1) / 2)) return false;
     }
     look_at_ = e;
     eye_guarded_ = place.eye_guarded;
@@ -273,7 +274,7 @@ void TwoLevelMethod::update(const Camera& camera) {
   const glm::dvec2 eye(camera.position.x / hf.spacing_x_m, camera.position.y / hf.spacing_y_m);
   scene_.prefetch_samples(glm::ivec2(eye), glm::ivec2(eye));  // paged heights: the ground under the eye
   level1_held_ = !place_level1(camera, ratio, eye);
-  scene_.follow_window(origin_ + (n_ - 1) / 2);  // the height window, if any, on Level1 (terrain_scene.h)
+  scene_.follow_window(windows_, origin_ + (n_ - 1) / 2);  // the height window, if any, on Level1 (terrain_scene.h)
   const int n = n_;
   band_w_ = lod::band_width_samples(level0_resolution_, options_.alpha, n, options_.band_stride);
 
@@ -411,7 +412,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     begin_pass("level1");
     if (!visible_blocks_.empty() && !skipped("level1")) {
       grid_program_.use();
-      scene_.bind_common(grid_program_, camera);
+      scene_.bind_common(grid_program_, camera, windows_);
       grid_program_.set("u_alpha", 1.0f);
       for (const auto& o : visible_blocks_) {
         grid_program_.set("u_origin", o);
@@ -452,7 +453,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       glClearNamedFramebufferfv(band_fbo, GL_DEPTH, 0, &clear_depth);
       SizeMeshes& m = meshes_for(n, band_w_);
       band_program_.use();
-      scene_.bind_common(band_program_, camera);
+      scene_.bind_common(band_program_, camera, windows_);
       glBindTextureUnit(2, beta_tex_.id());
       band_program_.set("u_beta_template", 2);
       band_program_.set("u_level1_center", centre);
@@ -483,7 +484,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
       const int cls = program == &level0_program_ ? 0 : 1;
       if (!draw_counts_[cls].empty() && !skipped("level0")) {
         program->use();
-        scene_.bind_common(*program, camera);
+        scene_.bind_common(*program, camera, windows_);
         program->set("u_eye_sample", eye_sample);
         program->set("u_eye_frac", glm::vec3(camera.position.x - eye_sample.x * spacing.x,
                                              camera.position.y - eye_sample.y * spacing.y, camera.position.z));

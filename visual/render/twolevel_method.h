@@ -83,6 +83,7 @@ class TwoLevelMethod final : public TerrainMethod {
   bool place_level1(const Camera& camera, double ratio, const glm::dvec2& eye);
 
   const TerrainScene& scene_;
+  int windows_ = -1;  // the scene's window set this method keeps on its Level1 (TerrainScene::claim_windows)
   TwoLevelOptions options_;
   gl::ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_, count_program_;
   const terrain::HeightPyramid& pyramid_;  // the scene's, shared across channels
