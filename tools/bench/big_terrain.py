@@ -12,7 +12,10 @@ copies meet (lat 36.0, lon -117.0: tile boundaries in both directions).
 With --cases including sierra_8x8_32769: 8 x 8 copies (32769², the size
 of the issue's synthetic 32769² case, made the same cheap way; its float
 heights alone are 4.3 GB, so they are paged from the VRT by the tile
-cache within terrain.memory_budget_mb, docs/terrain-data.md). Both fly 250 kt
+cache within terrain.memory_budget_mb, docs/terrain-data.md). With
+synthetic_tiles_32769: the synthetic fractal refined to 32769^2 at 15 m and
+written as a folder of 8 x 8 GeoTIFF tiles sharing edges (make_synthetic_tiles;
+about 1 GB of memory and a few minutes to make). All fly 250 kt
 (128.6 m/s) at 50-150 m above ground, heading 135. --budget-mb sets
 terrain.memory_budget_mb (default: the scenario default, 2048; a DEM whose
 float heights exceed it is paged). Measured per case, written to OUT.md as a
@@ -37,8 +40,15 @@ SPEED = 128.6  # m/s = 250 kt
 
 
 def flight(duration_s, centre):
-    # Straight line heading 135 deg through centre (lat, lon), centred on it.
+    # Straight line heading 135 deg through centre, centred on it: (lat, lon),
+    # or ("local", x, y) in terrain-local metres.
     half = SPEED * duration_s / 2
+    if centre[0] == "local":
+        d = half * 0.7071
+        agl = [50, 150, 80, 120, 60]
+        keys = [{"t": duration_s * k / 4, "position": [centre[1] - d + 2 * d * k / 4, centre[2] + d - 2 * d * k / 4, agl[k]],
+                 "hpr": [135, -3, 0]} for k in range(5)]
+        return {"frame": "local", "altitude": "agl", "keys": keys}
     dn = half / 111000.0 * 0.7071
     de = half / 90060.0 * 0.7071  # metres per degree of longitude at 36 deg N
     keys = []
@@ -113,7 +123,7 @@ def main():
     ap.add_argument("--size", default="640x480")
     ap.add_argument("--budget-mb", type=int, default=0, help="terrain.memory_budget_mb (0: the default)")
     ap.add_argument("--cases", default="sierra_4097,sierra_5x5_20481",
-                    help="comma-separated: sierra_4097, sierra_5x5_20481, sierra_8x8_32769")
+                    help="comma-separated: sierra_4097, sierra_5x5_20481, sierra_8x8_32769, synthetic_tiles_32769")
     args = ap.parse_args()
     args.size = tuple(int(v) for v in args.size.split("x"))
     dem_dir = os.environ.get("IG_DEM_DIR")
@@ -129,6 +139,17 @@ def main():
             subprocess.run([sys.executable, os.path.join(HERE, "make_copies_vrt.py"), ig, sierra, str(n), vrt],
                            check=True)
             cases["sierra_%dx%d_%d" % (n, n, 4096 * n + 1)] = (vrt, (36.0, -117.0))  # a corner of four copies
+        if "synthetic_tiles_32769" in args.cases:
+            # The synthetic fractal refined to 32769^2 as 8 x 8 GeoTIFF tiles
+            # (a folder: mosaicked in memory); flown across the corner of four tiles.
+            folder = os.path.join(tmp, "synthetic_tiles")
+            t0 = time.monotonic()
+            made = subprocess.run([os.path.join(args.build, "bin", "make_synthetic_tiles"), folder],
+                                  check=True, capture_output=True, text=True)
+            info = json.loads(made.stdout)
+            print("made %d tiles of the synthetic %dx%d in %.0f s" % (info["tiles"], info["width"], info["height"],
+                                                                     time.monotonic() - t0), flush=True)
+            cases["synthetic_tiles_32769"] = (folder, ("local", *info["centre_local_m"]))
         for name in args.cases.split(","):
             dem, centre = cases[name]
             r = run_case(ig, name, dem, centre, tmp, args)
