@@ -33,7 +33,13 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
       overview_ = std::make_unique<terrain::Heightfield>(*hf.paged->overview);  // built at load
     else
       overview_ = std::make_unique<terrain::Heightfield>(terrain::decimate_heightfield(hf, overview_step_));
-    windows_[0].height = std::make_unique<HeightWindowTexture>(hf, std::min(kDefaultHeightWindow, limit));
+    int window = std::min(kDefaultHeightWindow, limit);
+    if (hf.paged) {  // window + one tile around it in at most half the budget
+      const auto& cache = *hf.paged->cache;
+      const int fit = int(std::sqrt(double(cache.budget_bytes()) / 2.0 / sizeof(float))) - 2 * cache.tile_size();
+      window = std::min(window, std::max(fit, kMinPagedHeightWindow));
+    }
+    windows_[0].height = std::make_unique<HeightWindowTexture>(hf, window);
   }
   const terrain::Heightfield& tex = texture_heightfield();
   height_tex_ = gl::create_texture(GL_TEXTURE_2D);

@@ -46,12 +46,18 @@ class TerrainScene {
   // height window it then always has (issue 16).
   static constexpr int kOverviewSide = 4097;
   static constexpr int kDefaultHeightWindow = 4096;
+  // Paged heights: the window is made smaller when its tiles and the ring
+  // around it would take more than half the memory budget (the window
+  // refilling its own evicted tiles thrashes), but never below this: Level1's
+  // largest square (1025) and its band.
+  static constexpr int kMinPagedHeightWindow = 2048;
 
   // Uploads the height texture (and imagery, only when given). Throws
   // std::invalid_argument for a heightfield with fewer than 2 x 2 samples
   // (no surface to draw). A DEM larger than the GL texture limit gets an
   // overview texture (every overview_step()-th sample, at most
-  // kOverviewSide a side) and a height window of kDefaultHeightWindow:
+  // kOverviewSide a side) and a height window of kDefaultHeightWindow (less
+  // for paged heights on a small budget, see kMinPagedHeightWindow):
   // only methods that draw through the window (twolevel) can draw it.
   // texture_limit > 0 lowers the GL limit used for that decision (tests).
   TerrainScene(const terrain::Heightfield& heightfield, const ShadingParams& shading,
