@@ -37,6 +37,9 @@ struct TerrainSpec : options::DemLoadOptions {
   // beyond it is drawn from an overview plus the height window, as beyond
   // the GL limit (tests do that on a small DEM).
   int texture_limit = 0;
+  // Memory budget for imagery beyond the texture limit (paged from GDAL in
+  // tiles, terrain/imagery_loader.h; raised to what the imagery window needs).
+  int imagery_budget_mb = 512;
 };
 
 struct RenderSpec {

@@ -48,7 +48,8 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   co.title = "ig - " + scenario_.name;
   context_ = gl::create_context(co);
 
-  scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit);
+  scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit,
+                                                  std::size_t(scenario_.terrain.imagery_budget_mb) << 20);
   scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
   scene_->enable_height_window(scenario_.terrain.height_window);
 
@@ -93,6 +94,9 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   f.pose_ms = pose_ms;
   const terrain::HeightTileCache* pages = heightfield_.paged ? heightfield_.paged->cache.get() : nullptr;
   const auto before = pages ? pages->stats() : terrain::HeightTileCache::Stats{};
+  const render::ImageryWindowTexture* imagery = scene_->imagery_window();
+  const auto imagery_before = imagery ? imagery->stats() : render::ImageryWindowTexture::Stats{};
+  const auto imagery_pages_before = imagery ? imagery->cache().stats() : terrain::RgbTileCache::Stats{};
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
@@ -103,6 +107,14 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
     const auto after = pages->stats();
     f.page_waits = after.misses - before.misses;
     f.page_ins = after.prefetched - before.prefetched;
+  }
+  if (imagery) {
+    const auto after = imagery->stats();
+    const auto pages_after = imagery->cache().stats();
+    f.imagery_held = after.held_moves - imagery_before.held_moves;
+    f.imagery_missing = after.missing_tiles - imagery_before.missing_tiles;
+    f.imagery_page_ins = pages_after.prefetched - imagery_pages_before.prefetched;
+    f.imagery_page_waits = pages_after.misses - imagery_pages_before.misses;
   }
   return f;
 }
@@ -173,6 +185,12 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
   if (f.page_waits >= 0) {  // paged heights (issue 16)
     row.emplace_back("page_waits", f.page_waits);
     row.emplace_back("page_ins", f.page_ins);
+  }
+  if (f.imagery_held >= 0) {  // paged imagery (issue 16)
+    row.emplace_back("imagery_held", f.imagery_held);
+    row.emplace_back("imagery_missing", f.imagery_missing);
+    row.emplace_back("imagery_page_ins", f.imagery_page_ins);
+    row.emplace_back("imagery_page_waits", f.imagery_page_waits);
   }
   for (const auto& [name, value] : m.columns) row.emplace_back(name, value);
   append_work_columns(row, ch.last, /*per_pass=*/true);

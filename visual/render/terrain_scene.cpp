@@ -13,7 +13,8 @@
 namespace ig::render {
 
 TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& shading,
-                           const std::optional<std::string>& imagery_path, int texture_limit)
+                           const std::optional<std::string>& imagery_path, int texture_limit,
+                           std::size_t imagery_budget_bytes)
     : heightfield_(hf), shading_(shading) {
   if (hf.width < 2 || hf.height < 2 || !hf.has_samples())
     throw std::invalid_argument(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
@@ -50,8 +51,11 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   if (imagery_path) {
     // Georeferenced imagery is warped onto the DEM's footprint (terrain/imagery_loader.h).
     terrain::Imagery img;
+    terrain::ImageryPaging paging;  // beyond the limit: paged for a window of this side
+    paging.window_side = std::min(kDefaultHeightWindow, limit);
+    if (imagery_budget_bytes > 0) paging.budget_bytes = imagery_budget_bytes;
     try {
-      img = terrain::load_imagery(hf, *imagery_path, limit);
+      img = terrain::load_imagery(hf, *imagery_path, limit, paging);
     } catch (const std::exception& e) {
       throw gl::GlError(e.what());
     }
@@ -68,9 +72,8 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     imagery_uncovered_ = img.uncovered;
     imagery_overview_step_ = img.full_step;
     imagery_overview_span_ = glm::ivec2(img.width, img.height) * img.full_step;
-    if (!img.full_rgb.empty())  // finer than one texture: full resolution in a window
-      imagery_window_ = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height,
-                                                               std::min(kDefaultHeightWindow, limit),
+    if (img.paged)  // finer than one texture: full resolution in a window
+      imagery_window_ = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height, paging.window_side,
                                                                *imagery_path + ": imagery window");
   }
 }

@@ -19,6 +19,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -54,8 +55,11 @@ class TerrainScene {
   // kOverviewSide a side) and a height window of kDefaultHeightWindow:
   // only methods that draw through the window (twolevel) can draw it.
   // texture_limit > 0 lowers the GL limit used for that decision (tests).
+  // Imagery beyond the limit is paged within imagery_budget_bytes (0: the
+  // default of terrain::ImageryPaging).
   TerrainScene(const terrain::Heightfield& heightfield, const ShadingParams& shading,
-               const std::optional<std::string>& imagery_path = std::nullopt, int texture_limit = 0);
+               const std::optional<std::string>& imagery_path = std::nullopt, int texture_limit = 0,
+               std::size_t imagery_budget_bytes = 0);
   TerrainScene(const TerrainScene&) = delete;
   TerrainScene& operator=(const TerrainScene&) = delete;
 
@@ -105,9 +109,12 @@ class TerrainScene {
   long long follow_window(glm::ivec2 centre) const;
   const HeightWindowTexture* height_window() const { return height_window_.get(); }
   // Places the imagery window (if any) on sample `centre` ahead of the first
-  // frame, so its first fill is part of the load, not of a frame.
+  // frame, so its first fill (and a tile of margin: the tiles are read, the
+  // call waits) is part of the load, not of a frame.
   void place_imagery_window(glm::ivec2 centre) const {
-    if (imagery_window_) imagery_window_->centre_on_sample(centre);
+    if (!imagery_window_) return;
+    imagery_window_->centre_on_sample(centre, /*wait=*/true);
+    imagery_window_->cache().wait_idle();
   }
   // Paged heights (terrain/paged_heights.h): asks the tile cache's background
   // thread for the tiles within half a tile of each point (terrain-local
