@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lod/level0_budget.h"
+#include "lod/look_at_point.h"
 #include "render/twolevel_method.h"
 #include "session/scene_setup.h"
 #include "terrain/paged_heights.h"
@@ -121,11 +122,16 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
 
 void ScenarioRunner::prefetch_first_window() {
   if (scene_->imagery_window()) {
-    // Imagery beyond one texture: its window filled around the first pose at
-    // load (4096^2 RGB is 50 MB); the first frame moves it by what Level1's
-    // centre is off.
-    const glm::dvec3 p = pose_at(0.0).position - scene_->world_origin();
-    scene_->place_imagery_window(glm::ivec2(int(p.x / heightfield_.spacing_x_m), int(p.y / heightfield_.spacing_y_m)));
+    // Imagery beyond one texture: its window filled at load (4096^2 RGB is
+    // 50 MB, paged from the file) where the first frame's Level1 will be:
+    // around the first channel's look-at point (as the two-level method
+    // finds it), so frame 0 moves it by a little, within the tiles of margin
+    // loaded with it, instead of holding it for a jump.
+    const render::Camera cam = scene_->local_camera(camera_for(pose_at(0.0), channels_.front()));
+    const auto e = lod::find_look_at_point(heightfield_, scene_->height_pyramid(), cam.position, cam.forward(), cam.up(),
+                                           cam.earth_radius_m);
+    scene_->place_imagery_window(glm::ivec2(int(std::lround(e.point.x / heightfield_.spacing_x_m)),
+                                            int(std::lround(e.point.y / heightfield_.spacing_y_m))));
   }
   const render::HeightWindowTexture* window = scene_->height_window();
   if (!heightfield_.paged || !window) return;
