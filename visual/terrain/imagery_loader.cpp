@@ -2,12 +2,14 @@
 
 #include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_vsi.h>
 #include <gdal.h>
 #include <gdal_alg.h>
 #include <ogr_srs_api.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -71,12 +73,12 @@ class BoxMean {
 // The warped VRT of imagery beyond the limit: rectangles of the footprint
 // read on demand (GDAL warps them block by block), as RGB with uncovered
 // pixels grey. Not thread-safe (the tile cache calls it on one thread at a
-// time). GDAL's block cache is flushed after every read, so what stays
-// resident is the tile cache, not GDAL's copies of the source and the warp.
+// time). GDAL keeps the blocks it read (the source's and the warp's) in its
+// block cache, capped at 256 MB (as for paged heights), so neighbouring
+// tiles sharing a block warp it once.
 class WarpedImagery {
  public:
-  WarpedImagery(Dataset src, Dataset vrt, std::string path)
-      : src_(std::move(src)), vrt_(std::move(vrt)), path_(std::move(path)) {
+  WarpedImagery(Dataset vrt, std::string path) : vrt_(std::move(vrt)), path_(std::move(path)) {
     const int bands = GDALGetRasterCount(handle(vrt_));  // the colour bands, then the destination alpha
     band_map_ = {1, bands >= 3 ? 2 : 1, bands >= 3 ? 3 : 1, bands};  // as the one-texture read_rgb
     height_ = GDALGetRasterYSize(handle(vrt_));
@@ -89,8 +91,6 @@ class WarpedImagery {
     CPLErrorReset();
     const CPLErr err = GDALDatasetRasterIO(handle(vrt_), GF_Read, x0, height_ - y0 - h, w, h, rgba_.data(), w, h,
                                            GDT_Byte, 4, band_map_.data(), 4, GSpacing(w) * 4, 1);
-    GDALFlushCache(handle(vrt_));
-    GDALFlushCache(handle(src_));
     if (err != CE_None)
       throw DemError(path_, "imagery read failed at pixels " + std::to_string(x0) + "," + std::to_string(y0) + ": " +
                                 last_error("truncated or corrupt file?"));
@@ -110,12 +110,37 @@ class WarpedImagery {
   }
 
  private:
-  Dataset src_, vrt_;  // the warp refers to the source: closed after it (members in reverse)
+  Dataset vrt_;  // opens its own handle on the source
   std::string path_;
   std::array<int, 4> band_map_{};
   int height_ = 0;
   std::vector<std::uint8_t> rgba_;
 };
+
+// gdalwarp -of VRT onto the footprint (`args`), its blocks made tile x tile
+// (gdalwarp's VRTs have 512 x 128 blocks whatever -co says: the XML is
+// rewritten before it is opened).
+Dataset warped_vrt(GDALDatasetH src, std::vector<std::string> args, int tile, const std::string& path) {
+  static std::atomic<int> serial{0};
+  const std::string vsi = "/vsimem/ig_imagery_" + std::to_string(++serial) + ".vrt";
+  args.insert(args.end(), {"-of", "VRT"});
+  if (!gdal::warp(src, vsi, args)) throw DemError(path, "imagery warp failed: " + last_error("unknown GDAL error"));
+  vsi_l_offset n = 0;
+  GByte* bytes = VSIGetMemFileBuffer(vsi.c_str(), &n, FALSE);
+  std::string xml(reinterpret_cast<const char*>(bytes), std::size_t(n));
+  for (const std::string tag : {"BlockXSize", "BlockYSize"}) {
+    const std::size_t a = xml.find("<" + tag + ">"), b = xml.find("</" + tag + ">");
+    if (a != std::string::npos && b != std::string::npos && b > a)
+      xml.replace(a + tag.size() + 2, b - a - tag.size() - 2, std::to_string(tile));
+  }
+  VSILFILE* f = VSIFOpenL(vsi.c_str(), "wb");
+  const bool written = f && VSIFWriteL(xml.data(), 1, xml.size(), f) == xml.size();
+  if (f) VSIFCloseL(f);
+  Dataset vrt(written ? GDALOpenEx(vsi.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr) : nullptr);
+  VSIUnlink(vsi.c_str());
+  if (!vrt) throw DemError(path, "imagery warp failed: " + last_error("the warped VRT does not open"));
+  return vrt;
+}
 
 }  // namespace
 
@@ -176,13 +201,9 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
       // Paged: a warped VRT read tile by tile (blocks of one tile, so a tile
       // is warped once), the overview and the uncovered count in one pass.
       const int tile = std::max(paging.tile, 16);
-      for (const char* a : {"-of", "VRT", "-co"}) args.emplace_back(a);
-      args.push_back("BLOCKXSIZE=" + std::to_string(tile));
-      args.emplace_back("-co");
-      args.push_back("BLOCKYSIZE=" + std::to_string(tile));
-      Dataset vrt = gdal::warp(h, "", args);
-      if (!vrt) throw DemError(path, "imagery warp failed: " + last_error("unknown GDAL error"));
-      auto warped = std::make_shared<WarpedImagery>(std::move(src), std::move(vrt), path);
+      if (GDALGetCacheMax64() > (GIntBig(256) << 20)) GDALSetCacheMax64(GIntBig(256) << 20);
+      auto warped = std::make_shared<WarpedImagery>(warped_vrt(h, args, tile, path), path);
+      src.reset();
       const int fw = out.full_w, fh = out.full_h;
       BoxMean overview(fw, fh, out.full_step);
       std::vector<Rgb8> strip(std::size_t(fw) * tile);
