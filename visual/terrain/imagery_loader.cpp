@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <memory>
 
 #include "terrain/dem_loader.h"
@@ -126,8 +127,8 @@ Dataset warped_vrt(GDALDatasetH src, std::vector<std::string> args, int tile, co
   args.insert(args.end(), {"-of", "VRT"});
   if (!gdal::warp(src, vsi, args)) throw DemError(path, "imagery warp failed: " + last_error("unknown GDAL error"));
   vsi_l_offset n = 0;
-  GByte* bytes = VSIGetMemFileBuffer(vsi.c_str(), &n, FALSE);
-  std::string xml(reinterpret_cast<const char*>(bytes), std::size_t(n));
+  const GByte* bytes = VSIGetMemFileBuffer(vsi.c_str(), &n, FALSE);
+  std::string xml = bytes ? std::string(reinterpret_cast<const char*>(bytes), std::size_t(n)) : std::string();
   for (const std::string tag : {"BlockXSize", "BlockYSize"}) {
     const std::size_t a = xml.find("<" + tag + ">"), b = xml.find("</" + tag + ">");
     if (a != std::string::npos && b != std::string::npos && b > a)
@@ -153,7 +154,13 @@ std::size_t imagery_window_budget(int window_side, int tile) {
 Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_side, const ImageryPaging& paging) {
   gdal::register_once();
   gdal::QuietErrors quiet;
-  Dataset src(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  // A relative file opened by its absolute path: the paged path's warped VRT
+  // (in /vsimem/) names its source by it.
+  std::error_code ec;
+  const std::string open_path = std::filesystem::path(path).is_relative() && std::filesystem::is_regular_file(path, ec)
+                                    ? std::filesystem::absolute(path, ec).string()
+                                    : path;
+  Dataset src(GDALOpenEx(open_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!src) throw DemError(path, "imagery cannot be read: " + last_error("not a recognised raster format"));
   GDALDatasetH h = handle(src);
   double gt[6];
