@@ -259,7 +259,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   const std::string path = "terrain";
   require_object(j, path);
   check_keys(j, path, {"file", "encoding", "scale", "offset", "spacing_m", "generator", "height_window", "texture_limit",
-                     "memory_budget_mb", "wait_for_pages"});
+                     "memory_budget_mb", "imagery_budget_mb", "wait_for_pages"});
   const bool has_file = j.contains("file");
   const bool has_gen = j.contains("generator");
   if (has_file && has_gen) fail(path, "exactly one of \"file\" or \"generator\" may be given, not both");
@@ -274,6 +274,9 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   if (j.contains("memory_budget_mb"))
     t.memory_budget_mb =
         static_cast<int>(get_integer(j["memory_budget_mb"], child(path, "memory_budget_mb"), 1, 1 << 20));
+  if (j.contains("imagery_budget_mb"))
+    t.imagery_budget_mb =
+        static_cast<int>(get_integer(j["imagery_budget_mb"], child(path, "imagery_budget_mb"), 1, 1 << 20));
   if (has_gen) {
     for (const char* k : {"encoding", "scale", "offset", "spacing_m"}) {
       if (j.contains(k)) {

@@ -42,6 +42,9 @@ struct TerrainSpec : options::DemLoadOptions {
   // frame waits on I/O; true makes a frame wait for them instead, so a
   // replay's pictures do not depend on disk speed (regression captures).
   bool wait_for_pages = false;
+  // Memory budget for imagery beyond the texture limit (paged from GDAL in
+  // tiles, terrain/imagery_loader.h; raised to what the imagery window needs).
+  int imagery_budget_mb = 512;
 };
 
 struct RenderSpec {

@@ -59,6 +59,11 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
   if (f.page_waits > 0) ++frames_waited_on_io_;
   page_waits_ += std::max(f.page_waits, 0LL);
   page_ins_ += f.page_ins;
+  if (f.imagery_held > 0) ++imagery_frames_held_;
+  if (f.imagery_page_waits > 0) ++imagery_frames_waited_;
+  imagery_held_ += std::max(f.imagery_held, 0LL);
+  imagery_missing_ += f.imagery_missing;
+  imagery_page_ins_ += f.imagery_page_ins;
   if (progress_) {
     const double elapsed = ms_since(start_) / 1000.0;
     if (total_frames > 0)
@@ -122,6 +127,29 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         // tile queued instead; Level1 kept its square: frames.csv level1_held).
         {"wait_for_pages", runner.scene().wait_for_pages()},
         {"deferred_reads", st.deferred},
+    };
+  }
+  if (const render::ImageryWindowTexture* w = runner.scene().imagery_window()) {  // issue 16: paged imagery
+    const auto st = w->cache().stats();
+    double wall_s = 0.0;
+    for (double ms : log_.frame_ms()) wall_s += ms / 1000.0;
+    summary["paging"]["imagery"] = {
+        {"budget_mb", double(w->cache().budget_bytes()) / (1 << 20)},
+        {"tile_pixels", w->cache().tile_size()},
+        {"full_size", {w->full_size().x, w->full_size().y}},
+        {"window", w->size().x},
+        {"resident_mb", double(st.resident_bytes) / (1 << 20)},
+        {"peak_resident_mb", double(st.peak_resident_bytes) / (1 << 20)},
+        {"moves", w->stats().moves},
+        {"held_moves", imagery_held_},
+        {"frames_held", imagery_frames_held_},
+        {"missing_tiles", imagery_missing_},
+        {"frames_waited_on_io", imagery_frames_waited_},
+        {"page_waits_total", st.misses},  // incl. the first fill at load
+        {"page_ins", imagery_page_ins_},
+        {"page_ins_per_s", wall_s > 0 ? double(imagery_page_ins_) / wall_s : 0.0},
+        {"evictions", st.evictions},
+        {"failed_tiles", w->failed_tiles()},
     };
   }
   for (auto it = extra.begin(); extra.is_object() && it != extra.end(); ++it) summary[it.key()] = it.value();

@@ -40,6 +40,10 @@ class RunOutputs {
   std::chrono::steady_clock::time_point start_;
   // Paged heights (issue 16): frames that waited on a tile, tiles loaded.
   long long frames_waited_on_io_ = 0, page_waits_ = 0, page_ins_ = 0;
+  // Paged imagery: frames whose window move was held, held moves, tiles
+  // they missed, tiles loaded, frames that waited on an imagery tile.
+  long long imagery_frames_held_ = 0, imagery_held_ = 0, imagery_missing_ = 0, imagery_page_ins_ = 0,
+            imagery_frames_waited_ = 0;
 };
 
 }  // namespace ig::session

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lod/level0_budget.h"
+#include "lod/look_at_point.h"
 #include "render/twolevel_method.h"
 #include "session/scene_setup.h"
 #include "terrain/paged_heights.h"
@@ -48,7 +49,8 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   co.title = "ig - " + scenario_.name;
   context_ = gl::create_context(co);
 
-  scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit);
+  scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit,
+                                                  std::size_t(scenario_.terrain.imagery_budget_mb) << 20);
   scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
   scene_->enable_height_window(scenario_.terrain.height_window);
   scene_->set_wait_for_pages(scenario_.terrain.wait_for_pages);
@@ -94,6 +96,9 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   f.pose_ms = pose_ms;
   const terrain::HeightTileCache* pages = heightfield_.paged ? heightfield_.paged->cache.get() : nullptr;
   const auto before = pages ? pages->stats() : terrain::HeightTileCache::Stats{};
+  const render::ImageryWindowTexture* imagery = scene_->imagery_window();
+  const auto imagery_before = imagery ? imagery->stats() : render::ImageryWindowTexture::Stats{};
+  const auto imagery_pages_before = imagery ? imagery->cache().stats() : terrain::RgbTileCache::Stats{};
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
@@ -105,16 +110,29 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
     f.page_waits = after.misses - before.misses;
     f.page_ins = after.prefetched - before.prefetched;
   }
+  if (imagery) {
+    const auto after = imagery->stats();
+    const auto pages_after = imagery->cache().stats();
+    f.imagery_held = after.held_moves - imagery_before.held_moves;
+    f.imagery_missing = after.missing_tiles - imagery_before.missing_tiles;
+    f.imagery_page_ins = pages_after.prefetched - imagery_pages_before.prefetched;
+    f.imagery_page_waits = pages_after.misses - imagery_pages_before.misses;
+  }
   return f;
 }
 
 void ScenarioRunner::prefetch_first_window() {
   if (scene_->imagery_window()) {
-    // Imagery beyond one texture: its window filled around the first pose at
-    // load (4096^2 RGB is 50 MB); the first frame moves it by what Level1's
-    // centre is off.
-    const glm::dvec3 p = pose_at(0.0).position - scene_->world_origin();
-    scene_->place_imagery_window(glm::ivec2(int(p.x / heightfield_.spacing_x_m), int(p.y / heightfield_.spacing_y_m)));
+    // Imagery beyond one texture: its window filled at load (4096^2 RGB is
+    // 50 MB, paged from the file) where the first frame's Level1 will be:
+    // around the first channel's look-at point (as the two-level method
+    // finds it), so frame 0 moves it by a little, within the tiles of margin
+    // loaded with it, instead of holding it for a jump.
+    const render::Camera cam = scene_->local_camera(camera_for(pose_at(0.0), channels_.front()));
+    const auto e = lod::find_look_at_point(heightfield_, scene_->height_pyramid(), cam.position, cam.forward(), cam.up(),
+                                           cam.earth_radius_m);
+    scene_->place_imagery_window(glm::ivec2(int(std::lround(e.point.x / heightfield_.spacing_x_m)),
+                                            int(std::lround(e.point.y / heightfield_.spacing_y_m))));
   }
   const render::HeightWindowTexture* window = scene_->height_window();
   if (!heightfield_.paged || !window) return;
@@ -174,6 +192,12 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
   if (f.page_waits >= 0) {  // paged heights (issue 16)
     row.emplace_back("page_waits", f.page_waits);
     row.emplace_back("page_ins", f.page_ins);
+  }
+  if (f.imagery_held >= 0) {  // paged imagery (issue 16)
+    row.emplace_back("imagery_held", f.imagery_held);
+    row.emplace_back("imagery_missing", f.imagery_missing);
+    row.emplace_back("imagery_page_ins", f.imagery_page_ins);
+    row.emplace_back("imagery_page_waits", f.imagery_page_waits);
   }
   for (const auto& [name, value] : m.columns) row.emplace_back(name, value);
   append_work_columns(row, ch.last, /*per_pass=*/true);

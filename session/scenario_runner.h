@@ -53,6 +53,11 @@ struct FrameResult {
   // tiles the background thread loaded during it.
   long long page_waits = -1;
   long long page_ins = 0;
+  // Paged imagery only (-1 otherwise): imagery window moves held because a
+  // tile was not resident, the tiles they missed, tiles the imagery cache's
+  // background thread loaded, and tiles a frame waited for (0 by design).
+  long long imagery_held = -1;
+  long long imagery_missing = 0, imagery_page_ins = 0, imagery_page_waits = 0;
 };
 
 // The frame's work counters as log columns: totals (vs_invocations,

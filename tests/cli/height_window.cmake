@@ -27,19 +27,11 @@ if(CMAKE_SCRIPT_MODE_FILE)
   set(DEM "$ENV{IG_DEM_DIR}/sierra_nevada_3arcsec_4097.tif")
   file(REMOVE_RECURSE "${OUT}")
   file(MAKE_DIRECTORY "${OUT}")
+  include(${CMAKE_CURRENT_LIST_DIR}/lib/window_runs.cmake)
+  set(keys "{\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
+    {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}")
   if(CASE STREQUAL "overview")
-    file(WRITE "${OUT}/overview.json" "{\"name\": \"overview\",
-  \"terrain\": {\"file\": \"${DEM}\", \"texture_limit\": 2049, \"height_window\": 512},
-  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
-  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
-    {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
-    {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}]},
-  \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
-    execute_process(COMMAND "${IG}" run "${OUT}/overview.json" --out "${OUT}/run" --headless --quiet
-      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(NOT rc EQUAL 0 OR NOT EXISTS "${OUT}/run/final.png")
-      message(FATAL_ERROR "ig run with an overview: exit ${rc}\n${out}\n${err}")
-    endif()
+    run_window_scenario(overview "\"file\": \"${DEM}\", \"texture_limit\": 2049, \"height_window\": 512" "" "${keys}")
     execute_process(COMMAND "${IG}" run "${OUT}/overview.json" --out "${OUT}/run_roam" --headless --quiet --method roam
       RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message("ig run --method roam: exit ${rc}: ${err}")
@@ -59,20 +51,11 @@ if(CMAKE_SCRIPT_MODE_FILE)
       if(budget MATCHES "live")
         set(wait "false")
       endif()
-      file(WRITE "${OUT}/b${budget}.json" "{\"name\": \"budget_${budget}\",
-  \"terrain\": {\"file\": \"${DEM}\", ${extra}\"height_window\": 256, \"memory_budget_mb\": ${mb}, \"wait_for_pages\": ${wait}},
-  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
-  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
-    {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
-    {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}]},
-  \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
-      execute_process(COMMAND "${IG}" run "${OUT}/b${budget}.json" --out "${OUT}/run_${budget}" --headless --quiet
-        RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-      if(NOT rc EQUAL 0)
-        message(FATAL_ERROR "ig run with memory_budget_mb ${budget}: exit ${rc}\n${out}\n${err}")
-      endif()
+      run_window_scenario(${budget}
+        "\"file\": \"${DEM}\", ${extra}\"height_window\": 256, \"memory_budget_mb\": ${mb}, \"wait_for_pages\": ${wait}"
+        "" "${keys}")
     endforeach()
-    execute_process(COMMAND "${IG}" run "${OUT}/b16.json" --out "${OUT}/run_roam" --headless --quiet --method roam
+    execute_process(COMMAND "${IG}" run "${OUT}/16.json" --out "${OUT}/run_roam" --headless --quiet --method roam
       RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message("ig run --method roam on paged heights: exit ${rc}: ${err}")
     if(rc EQUAL 0 OR NOT err MATCHES "method 'roam' cannot draw .*(paged|texture limit)")
@@ -116,18 +99,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
     return()
   endif()
   foreach(window 0 256)
-    file(WRITE "${OUT}/w${window}.json" "{\"name\": \"window_${window}\",
-  \"terrain\": {\"file\": \"${DEM}\", \"height_window\": ${window}},
-  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45},
-  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
-    {\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
-    {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}]},
-  \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
-    execute_process(COMMAND "${IG}" run "${OUT}/w${window}.json" --out "${OUT}/run_${window}" --headless --quiet
-      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(NOT rc EQUAL 0)
-      message(FATAL_ERROR "ig run with height_window ${window}: exit ${rc}\n${out}\n${err}")
-    endif()
+    run_window_scenario(${window} "\"file\": \"${DEM}\", \"height_window\": ${window}" "" "${keys}")
   endforeach()
   # The window was used: its first fill (256 x 256 floats) and its updates
   # show in the frames' upload_bytes on top of what the run without it uploads.

@@ -20,6 +20,12 @@
 #    naming the limit; the picture's difference from the one-texture render
 #    is printed (beyond the window and where minified, the overview is read
 #    instead of the full image's mipmaps);
+#  * top_down_paged / flight_paged: the same with terrain.imagery_budget_mb
+#    1, so the imagery's tile cache is at the least the window needs (12 MB,
+#    under the image's 17 MB);
+#  * every windowed run: summary.json's paging.imagery within its budget, no
+#    frame waited on an imagery tile (moves are held instead), frames.csv
+#    has the imagery paging columns;
 #  * bad: imagery 20 degrees east of the DEM is refused with the clear error.
 # Two roles, like height_window.cmake.
 
@@ -50,34 +56,55 @@ if(CMAKE_SCRIPT_MODE_FILE)
     set(keys "{\"t\": 0, \"position\": [35.30, 138.60, 200], \"hpr\": [60, -6, 0]},
     {\"t\": 2, \"position\": [35.32, 138.66, 150], \"hpr\": [65, -4, -8]}")
   endif()
+  if(CASE STREQUAL "bad")
+    file(WRITE "${OUT}/bad.json" "{\"name\": \"bad\", \"terrain\": {\"file\": \"${DEM}\", \"texture_limit\": ${limit}},
+  \"render\": {\"width\": 160, \"height\": 120, \"imagery\": \"${OUT}/ortho.tif\"},
+  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [${keys}]}, \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
+    execute_process(COMMAND "${IG}" run "${OUT}/bad.json" --out "${OUT}/run_bad" --headless --quiet
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message("bad imagery: exit ${rc}: ${err}")
+    if(rc EQUAL 0 OR NOT err MATCHES "ortho.tif: imagery does not overlap the DEM")
+      message(FATAL_ERROR "imagery off the DEM must be refused naming the file and the reason")
+    endif()
+    return()
+  endif()
+  include(${CMAKE_CURRENT_LIST_DIR}/lib/window_runs.cmake)
+  # paged: the imagery cache at its least (imagery_budget_mb 1 is raised to
+  # what the 1201-pixel window needs with a tile of margin, 12 MB: less than
+  # the 2402^2 image's 17 MB).
+  set(budget "")
+  if(CASE MATCHES "_paged$")
+    set(budget ", \"imagery_budget_mb\": 1")
+  endif()
   foreach(l 0 ${limit})
     set(extra "")
     if(l GREATER 0)
-      set(extra ", \"texture_limit\": ${l}")
+      set(extra ", \"texture_limit\": ${l}${budget}")
     endif()
-    file(WRITE "${OUT}/l${l}.json" "{\"name\": \"imagery_${l}\",
-  \"terrain\": {\"file\": \"${DEM}\"${extra}},
-  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45, \"imagery\": \"${OUT}/ortho.tif\"},
-  \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
-    ${keys}]},
-  \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")
-    execute_process(COMMAND "${IG}" run "${OUT}/l${l}.json" --out "${OUT}/run_${l}" --headless --quiet
-      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(CASE STREQUAL "bad")
-      message("bad imagery: exit ${rc}: ${err}")
-      if(rc EQUAL 0 OR NOT err MATCHES "ortho.tif: imagery does not overlap the DEM")
-        message(FATAL_ERROR "imagery off the DEM must be refused naming the file and the reason")
-      endif()
-      continue()
-    endif()
-    if(NOT rc EQUAL 0 OR NOT EXISTS "${OUT}/run_${l}/final.png")
-      message(FATAL_ERROR "ig run with texture_limit ${l}: exit ${rc}\n${out}\n${err}")
-    endif()
+    run_window_scenario(l${l} "\"file\": \"${DEM}\"${extra}" ", \"imagery\": \"${OUT}/ortho.tif\"" "${keys}")
   endforeach()
-  if(CASE STREQUAL "bad")
-    return()
+  # Paged imagery: summary.json's paging.imagery and frames.csv's imagery
+  # columns; no frame waited on an imagery tile (moves are held instead).
+  file(READ "${OUT}/run_l${limit}/summary.json" summary)
+  string(JSON peak GET "${summary}" paging imagery peak_resident_mb)
+  string(JSON budget_mb GET "${summary}" paging imagery budget_mb)
+  string(JSON waited GET "${summary}" paging imagery frames_waited_on_io)
+  string(JSON held GET "${summary}" paging imagery held_moves)
+  message("${CASE}: imagery cache peak ${peak} of ${budget_mb} MB, held moves ${held}, frames waited ${waited}")
+  if(NOT waited EQUAL 0)
+    message(FATAL_ERROR "${waited} frames waited on an imagery tile")
   endif()
-  execute_process(COMMAND "${TOOL}" diff "${OUT}/run_0/final.png" "${OUT}/run_${limit}/final.png" OUTPUT_VARIABLE d)
+  if(peak GREATER budget_mb)
+    message(FATAL_ERROR "the imagery cache held ${peak} MB, over its ${budget_mb} MB budget")
+  endif()
+  if(CASE MATCHES "_paged$" AND budget_mb GREATER 20)
+    message(FATAL_ERROR "imagery_budget_mb 1 gave a ${budget_mb} MB cache, not the window's least")
+  endif()
+  file(STRINGS "${OUT}/run_l${limit}/frames.csv" header LIMIT_COUNT 1)
+  if(NOT header MATCHES "imagery_held,imagery_missing,imagery_page_ins,imagery_page_waits")
+    message(FATAL_ERROR "frames.csv of a paged-imagery run has no imagery paging columns: ${header}")
+  endif()
+  execute_process(COMMAND "${TOOL}" diff "${OUT}/run_l0/final.png" "${OUT}/run_l${limit}/final.png" OUTPUT_VARIABLE d)
   string(STRIP "${d}" d)
   message("${CASE}: window render vs one texture: ${d}")
   if(CASE MATCHES "^top_down")
@@ -89,8 +116,8 @@ if(CMAKE_SCRIPT_MODE_FILE)
   # flight: the window moved: frames after the first upload more than
   # without it (the imagery window's new rows and columns).
   include(${CMAKE_CURRENT_LIST_DIR}/lib/frames_csv.cmake)
-  sum_frames_column("${OUT}/run_0/frames.csv" upload_bytes 1 up0)
-  sum_frames_column("${OUT}/run_1201/frames.csv" upload_bytes 1 up1201)
+  sum_frames_column("${OUT}/run_l0/frames.csv" upload_bytes 1 up0)
+  sum_frames_column("${OUT}/run_l1201/frames.csv" upload_bytes 1 up1201)
   message("flight: upload_bytes after the first frame: ${up0} one texture, ${up1201} with the window")
   if(NOT up1201 GREATER up0)
     message(FATAL_ERROR "the imagery window did not move (no more uploads after the first frame)")
@@ -104,7 +131,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
   return()
 endif()
 
-foreach(case top_down top_down_overview flight bad)
+foreach(case top_down top_down_overview top_down_paged flight flight_paged bad)
   add_test(NAME cli.imagery_window.${case}
     COMMAND ${CMAKE_COMMAND} -DIG=$<TARGET_FILE:ig> -DTOOL=$<TARGET_FILE:imagery_tool>
       -DOUT=${CMAKE_BINARY_DIR}/test-out/imagery_window_${case} -DCASE=${case} -P ${CMAKE_CURRENT_LIST_FILE})

@@ -24,6 +24,16 @@ Markdown table: load-to-first-frame time, peak resident memory
 uploads (MB per second of flight, largest per frame), tiles paged in by the
 background thread per second of wall time, and frames that waited on I/O
 (paged: frames with a synchronous page-in, summary.json "paging").
+
+Imagery (issue 16 deliverable 3): with --cases including sierra_4097_ortho,
+an RGB GeoTIFF --imagery-scale (default 6) times finer than the Sierra DEM
+(24582^2 at 6: 1.8 GB of RGB; tiled, DEFLATE; red the height, green/blue a
+pixel-level pattern) is made at bench time by imagery_tool (BUILD/bin) and
+draped over the Sierra DEM: beyond the texture limit it is paged from GDAL
+within terrain.imagery_budget_mb (--imagery-budget-mb, default the scenario
+default). Its columns: the imagery cache's budget and peak, tiles paged in
+per second, the window's held moves (and frames holding), and frames that
+waited on an imagery tile (0 by design), from summary.json "paging.imagery".
 """
 import argparse
 import csv
@@ -67,13 +77,17 @@ def p99(values):
     return v[min(len(v) - 1, int(0.99 * len(v)))] if v else 0.0
 
 
-def run_case(ig, name, dem, centre, out_dir, args):
+def run_case(ig, name, dem, centre, out_dir, args, imagery=None):
     w, h = args.size
     terrain_spec = {"file": dem}
     if args.budget_mb:
         terrain_spec["memory_budget_mb"] = args.budget_mb
-    scenario = {"name": name, "terrain": terrain_spec,
-                "render": {"width": w, "height": h, "fov_y_deg": 60},
+    render = {"width": w, "height": h, "fov_y_deg": 60}
+    if imagery:
+        render["imagery"] = imagery
+        if args.imagery_budget_mb:
+            terrain_spec["imagery_budget_mb"] = args.imagery_budget_mb
+    scenario = {"name": name, "terrain": terrain_spec, "render": render,
                 "path": flight(args.duration, centre), "time": {"step_s": args.step, "duration_s": args.duration}}
     sc = os.path.join(out_dir, name + ".json")
     with open(sc, "w") as f:
@@ -111,6 +125,7 @@ def run_case(ig, name, dem, centre, out_dir, args):
         "paging": summary.get("paging"),
         # Live paging: frames whose Level1 kept the last square while tiles were read.
         "level1_held": sum(1 for r in rows if r.get("level1_held") == "1"),
+        "imagery_held_frames": sum(1 for r in rows if int(r.get("imagery_held") or 0) > 0),
     }
 
 
@@ -123,7 +138,9 @@ def main():
     ap.add_argument("--size", default="640x480")
     ap.add_argument("--budget-mb", type=int, default=0, help="terrain.memory_budget_mb (0: the default)")
     ap.add_argument("--cases", default="sierra_4097,sierra_5x5_20481",
-                    help="comma-separated: sierra_4097, sierra_5x5_20481, sierra_8x8_32769, synthetic_tiles_32769")
+                    help="comma-separated: sierra_4097, sierra_5x5_20481, sierra_8x8_32769, synthetic_tiles_32769, sierra_4097_ortho")
+    ap.add_argument("--imagery-scale", type=int, default=6, help="imagery pixels per DEM sample (sierra_4097_ortho)")
+    ap.add_argument("--imagery-budget-mb", type=int, default=0, help="terrain.imagery_budget_mb (0: the default)")
     args = ap.parse_args()
     args.size = tuple(int(v) for v in args.size.split("x"))
     dem_dir = os.environ.get("IG_DEM_DIR")
@@ -134,7 +151,18 @@ def main():
     results = []
     with tempfile.TemporaryDirectory(prefix="ig_big_") as tmp:
         cases = {"sierra_4097": (sierra, (36.7, -118.3))}
+        imagery = None
+        if "sierra_4097_ortho" in args.cases.split(","):
+            imagery = os.path.join(tmp, "sierra_ortho_x%d.tif" % args.imagery_scale)
+            t0 = time.monotonic()
+            subprocess.run([os.path.join(args.build, "bin", "imagery_tool"), "make", sierra, imagery,
+                            str(args.imagery_scale), "0", "compress"], check=True)
+            print("made %s (%.0f MB) in %.0f s" % (imagery, os.path.getsize(imagery) / 1e6, time.monotonic() - t0),
+                  flush=True)
+            cases["sierra_4097_ortho"] = (sierra, (36.7, -118.3))
         for n in (5, 8):
+            if "sierra_%dx%d_%d" % (n, n, 4096 * n + 1) not in args.cases.split(","):
+                continue
             vrt = os.path.join(tmp, "sierra_%dx%d.vrt" % (n, n))
             subprocess.run([sys.executable, os.path.join(HERE, "make_copies_vrt.py"), ig, sierra, str(n), vrt],
                            check=True)
@@ -152,33 +180,44 @@ def main():
             cases["synthetic_tiles_32769"] = (folder, ("local", *info["centre_local_m"]))
         for name in args.cases.split(","):
             dem, centre = cases[name]
-            r = run_case(ig, name, dem, centre, tmp, args)
+            r = run_case(ig, name, dem, centre, tmp, args, imagery if name.endswith("_ortho") else None)
             print(json.dumps(r), flush=True)
             results.append(r)
     with open(args.out, "w") as f:
         f.write("| case | samples | load (s) | start to first frame (s) | peak RSS (MB) | RSS bytes / sample | "
                 "frames | frame median / p99 (ms) | LOD / terrain p99 (ms) | uploads (MB per s of flight, max KB per frame) | "
-                "heights | page-ins per s (tiles) | frames waiting on I/O |\n")
-        f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+                "heights | page-ins per s (tiles) | frames waiting on I/O | imagery |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in results:
             if "error" in r:
                 f.write("| %s | refused: %s |\n" % (r["name"], r["error"]))
                 continue
             pg = r["paging"]
-            if pg:
+            im = (pg or {}).get("imagery")
+            if im:
+                imagery_cell = ("%dx%d paged, %.0f MB budget, cache peak %.0f MB, %.1f page-ins/s, %d held moves "
+                                "(%d frames), %d frames waited, %d failed tiles" % (
+                                    im["full_size"][0], im["full_size"][1], im["budget_mb"], im["peak_resident_mb"],
+                                    im["page_ins_per_s"], im["held_moves"], im["frames_held"],
+                                    im["frames_waited_on_io"], im["failed_tiles"]))
+            else:
+                imagery_cell = "-"
+            if pg and "budget_mb" in pg:
                 heights = "paged, %.0f MB budget, cache peak %.0f MB" % (pg["budget_mb"], pg["peak_resident_mb"])
                 io = "%d (%d tiles waited for); Level1 held in %d frames" % (
                     pg["frames_waited_on_io"], pg["page_waits"], r["level1_held"])
                 rate = "%.1f" % pg["page_ins_per_s"]
             else:
                 heights, io, rate = "whole", "0 (no I/O after load)", "-"
-            f.write("| %s | %s | %.1f | %.1f | %.0f | %.2f | %d | %.0f / %.0f | %.1f / %.0f | %.2f, %.0f | %s | %s | %s |\n" % (
+            f.write("| %s | %s | %.1f | %.1f | %.0f | %.2f | %d | %.0f / %.0f | %.1f / %.0f | %.2f, %.0f | %s | %s | %s | %s |\n" % (
                 r["name"], r["size"], r["load_s"], r["first_frame_s"], r["rss_mb"], r["bytes_per_sample"], r["frames"],
                 r["median_ms"], r["p99_ms"], r["lod_p99_ms"], r["terrain_p99_ms"], r["upload_mb_s"], r["upload_max_kb"],
-                heights, rate, io))
+                heights, rate, io, imagery_cell))
         f.write("\nCommand: `IG_DEM_DIR=%s %s %s %s --duration %g --step %g --size %dx%d --cases %s%s`\n" % (
             dem_dir, os.path.relpath(__file__), args.build, args.out, args.duration, args.step, *args.size, args.cases,
-            " --budget-mb %d" % args.budget_mb if args.budget_mb else ""))
+            (" --budget-mb %d" % args.budget_mb if args.budget_mb else "") +
+            (" --imagery-scale %d" % args.imagery_scale if "sierra_4097_ortho" in args.cases else "") +
+            (" --imagery-budget-mb %d" % args.imagery_budget_mb if args.imagery_budget_mb else "")))
     print("wrote", args.out)
 
 

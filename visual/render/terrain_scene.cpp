@@ -13,7 +13,8 @@
 namespace ig::render {
 
 TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& shading,
-                           const std::optional<std::string>& imagery_path, int texture_limit)
+                           const std::optional<std::string>& imagery_path, int texture_limit,
+                           std::size_t imagery_budget_bytes)
     : heightfield_(hf), shading_(shading) {
   if (hf.width < 2 || hf.height < 2 || !hf.has_samples())
     throw std::invalid_argument(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
@@ -56,8 +57,11 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   if (imagery_path) {
     // Georeferenced imagery is warped onto the DEM's footprint (terrain/imagery_loader.h).
     terrain::Imagery img;
+    terrain::ImageryPaging paging;  // beyond the limit: paged for a window of this side
+    paging.window_side = std::min(kDefaultHeightWindow, limit);
+    if (imagery_budget_bytes > 0) paging.budget_bytes = imagery_budget_bytes;
     try {
-      img = terrain::load_imagery(hf, *imagery_path, limit);
+      img = terrain::load_imagery(hf, *imagery_path, limit, paging);
     } catch (const std::exception& e) {
       throw gl::GlError(e.what());
     }
@@ -74,10 +78,13 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     imagery_uncovered_ = img.uncovered;
     imagery_overview_step_ = img.full_step;
     imagery_overview_span_ = glm::ivec2(img.width, img.height) * img.full_step;
-    if (!img.full_rgb.empty())  // finer than one texture: full resolution in a window
-      windows_[0].imagery = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height,
-                                                               std::min(kDefaultHeightWindow, limit),
+    if (img.paged) {  // finer than one texture: full resolution in a window (one per set)
+      imagery_window_side_ = paging.window_side;
+      windows_[0].imagery = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height, imagery_window_side_,
                                                                *imagery_path + ": imagery window");
+      img.rgb = {};
+      window_imagery_ = std::make_unique<terrain::Imagery>(std::move(img));
+    }
   }
 }
 
@@ -154,7 +161,9 @@ int TerrainScene::claim_windows() const {
     }
   Windows set;  // a new set like the first
   if (const auto& h = windows_[0].height) set.height = std::make_unique<HeightWindowTexture>(heightfield_, h->size().x);
-  // Imagery windows are not repeated yet (the full image is held by the first).
+  if (window_imagery_)  // the same paged imagery (one tile cache), its own window
+    set.imagery = std::make_unique<ImageryWindowTexture>(*window_imagery_, heightfield_.width, heightfield_.height,
+                                                         imagery_window_side_, heightfield_.source + ": imagery window");
   windows_.push_back(std::move(set));
   windows_in_use_.push_back(true);
   return int(windows_.size()) - 1;
@@ -166,7 +175,10 @@ void TerrainScene::release_windows(int set) const {
 
 void TerrainScene::place_imagery_window(glm::ivec2 centre) const {
   for (const Windows& set : windows_)
-    if (set.imagery) set.imagery->centre_on_sample(centre);
+    if (set.imagery) {
+      set.imagery->centre_on_sample(centre, /*wait=*/true);
+      set.imagery->cache().wait_idle();
+    }
 }
 
 void TerrainScene::prefetch_heights(const std::vector<glm::dvec3>& points_m) const {
@@ -201,7 +213,7 @@ bool TerrainScene::window_ready(int set, glm::ivec2 centre) const {
 
 long long TerrainScene::follow_window(int set, glm::ivec2 centre) const {
   const Windows& w = windows_[set];
-  if (w.imagery) w.imagery->centre_on_sample(centre);
+  if (w.imagery) w.imagery->centre_on_sample(centre, wait_for_pages_);  // live: held until its tiles are in
   return w.height ? w.height->centre_on(centre) : 0;
 }
 

@@ -19,6 +19,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -60,8 +61,11 @@ class TerrainScene {
   // for paged heights on a small budget, see kMinPagedHeightWindow):
   // only methods that draw through the window (twolevel) can draw it.
   // texture_limit > 0 lowers the GL limit used for that decision (tests).
+  // Imagery beyond the limit is paged within imagery_budget_bytes (0: the
+  // default of terrain::ImageryPaging).
   TerrainScene(const terrain::Heightfield& heightfield, const ShadingParams& shading,
-               const std::optional<std::string>& imagery_path = std::nullopt, int texture_limit = 0);
+               const std::optional<std::string>& imagery_path = std::nullopt, int texture_limit = 0,
+               std::size_t imagery_budget_bytes = 0);
   TerrainScene(const TerrainScene&) = delete;
   TerrainScene& operator=(const TerrainScene&) = delete;
 
@@ -119,7 +123,8 @@ class TerrainScene {
   long long follow_window(int set, glm::ivec2 centre) const;
   const HeightWindowTexture* height_window(int set = 0) const { return windows_[set].height.get(); }
   // Places every set's imagery window (if any) on sample `centre` ahead of
-  // the first frame, so its first fill is part of the load, not of a frame.
+  // the first frame, so its first fill (and a tile of margin: the tiles are
+  // read, the call waits) is part of the load, not of a frame.
   void place_imagery_window(glm::ivec2 centre) const;
   // Paged heights (terrain/paged_heights.h): asks the tile cache's background
   // thread for the tiles within half a tile of each point (terrain-local
@@ -179,6 +184,11 @@ class TerrainScene {
   };
   mutable std::vector<Windows> windows_ = std::vector<Windows>(1);  // see claim_windows()
   mutable std::vector<bool> windows_in_use_ = std::vector<bool>(1, false);
+  // Paged imagery beyond the texture limit, for the imagery windows of the
+  // sets made after the first (its overview pixels dropped: they are the
+  // imagery texture); null otherwise.
+  std::unique_ptr<terrain::Imagery> window_imagery_;
+  int imagery_window_side_ = 0;
   glm::dvec3 world_origin_{0.0};
   double earth_radius_m_ = 0.0;
 };

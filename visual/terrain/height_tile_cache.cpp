@@ -7,13 +7,14 @@
 
 namespace ig::terrain {
 namespace {
-thread_local bool no_wait = false;
+thread_local bool no_wait = false;  // see TileNoWait
 }  // namespace
 
-HeightTileCache::NoWait::NoWait() : outer_(no_wait) { no_wait = true; }
-HeightTileCache::NoWait::~NoWait() { no_wait = outer_; }
+TileNoWait::TileNoWait() : outer_(no_wait) { no_wait = true; }
+TileNoWait::~TileNoWait() { no_wait = outer_; }
 
-HeightTileCache::HeightTileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader)
+template <class T>
+TileCache<T>::TileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader)
     : width_(width),
       height_(height),
       tile_(tile_size),
@@ -22,11 +23,12 @@ HeightTileCache::HeightTileCache(int width, int height, int tile_size, std::size
       budget_(budget_bytes),
       reader_(std::move(reader)) {
   if (width < 1 || height < 1 || tile_size < 1 || !reader_)
-    throw std::invalid_argument("HeightTileCache: needs a size, a tile size and a reader");
+    throw std::invalid_argument("TileCache: needs a size, a tile size and a reader");
   loader_ = std::thread([this] { loader_loop(); });
 }
 
-HeightTileCache::~HeightTileCache() {
+template <class T>
+TileCache<T>::~TileCache() {
   {
     std::lock_guard lock(mutex_);
     stop_ = true;
@@ -35,7 +37,8 @@ HeightTileCache::~HeightTileCache() {
   loader_.join();
 }
 
-HeightTileCache::TilePtr HeightTileCache::load(int k) const {
+template <class T>
+typename TileCache<T>::TilePtr TileCache<T>::load(int k) const {
   const int tx = k % tiles_x_, ty = k / tiles_x_;
   const int x0 = tx * tile_, y0 = ty * tile_;
   const int w = std::min(tile_, width_ - x0), h = std::min(tile_, height_ - y0);
@@ -45,15 +48,16 @@ HeightTileCache::TilePtr HeightTileCache::load(int k) const {
   return t;
 }
 
-void HeightTileCache::insert_locked(int k, TilePtr t) const {
+template <class T>
+void TileCache<T>::insert_locked(int k, TilePtr t) const {
   lru_.push_front(k);
-  stats_.resident_bytes += t->size() * sizeof(float);
+  stats_.resident_bytes += t->size() * sizeof(T);
   tiles_[k] = Entry{std::move(t), lru_.begin()};
   while (stats_.resident_bytes > budget_ && lru_.size() > 1) {
     const int victim = lru_.back();
     lru_.pop_back();
     auto it = tiles_.find(victim);
-    stats_.resident_bytes -= it->second.tile->size() * sizeof(float);
+    stats_.resident_bytes -= it->second.tile->size() * sizeof(T);
     tiles_.erase(it);
     ++stats_.evictions;
   }
@@ -61,7 +65,8 @@ void HeightTileCache::insert_locked(int k, TilePtr t) const {
   stats_.peak_resident_bytes = std::max(stats_.peak_resident_bytes, stats_.resident_bytes);
 }
 
-HeightTileCache::TilePtr HeightTileCache::get(int k) const {
+template <class T>
+typename TileCache<T>::TilePtr TileCache<T>::get(int k) const {
   std::unique_lock lock(mutex_);
   bool counted = false;
   for (;;) {
@@ -103,18 +108,21 @@ HeightTileCache::TilePtr HeightTileCache::get(int k) const {
   return t;
 }
 
-float HeightTileCache::at(int i, int j) const {
+template <class T>
+T TileCache<T>::at(int i, int j) const {
   const TilePtr t = get(key(i / tile_, j / tile_));
   const int x0 = (i / tile_) * tile_, y0 = (j / tile_) * tile_;
   const int w = std::min(tile_, width_ - x0);
   return (*t)[static_cast<std::size_t>(j - y0) * w + (i - x0)];
 }
 
-void HeightTileCache::read_rect(int x, int y, int w, int h, float* dst, std::size_t dst_stride) const {
+template <class T>
+template <class Fetch>
+void TileCache<T>::copy_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride, Fetch&& fetch) const {
   if (w <= 0 || h <= 0) return;
   for (int ty = y / tile_; ty <= (y + h - 1) / tile_; ++ty)
     for (int tx = x / tile_; tx <= (x + w - 1) / tile_; ++tx) {
-      const TilePtr t = get(key(tx, ty));
+      const TilePtr t = fetch(key(tx, ty));
       const int x0 = tx * tile_, y0 = ty * tile_;
       const int tw = std::min(tile_, width_ - x0);
       const int cx0 = std::max(x, x0), cx1 = std::min(x + w, x0 + tw);
@@ -122,11 +130,39 @@ void HeightTileCache::read_rect(int x, int y, int w, int h, float* dst, std::siz
       for (int r = cy0; r < cy1; ++r)
         std::memcpy(dst + static_cast<std::size_t>(r - y) * dst_stride + (cx0 - x),
                     t->data() + static_cast<std::size_t>(r - y0) * tw + (cx0 - x0),
-                    static_cast<std::size_t>(cx1 - cx0) * sizeof(float));
+                    static_cast<std::size_t>(cx1 - cx0) * sizeof(T));
     }
 }
 
-void HeightTileCache::request(int x, int y, int w, int h) const {
+template <class T>
+void TileCache<T>::read_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride) const {
+  copy_rect(x, y, w, h, dst, dst_stride, [this](int k) { return get(k); });
+}
+
+template <class T>
+int TileCache<T>::try_read_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride) const {
+  if (w <= 0 || h <= 0) return 0;
+  std::unordered_map<int, TilePtr> held;  // taken under the lock, so eviction cannot take them away
+  int missing = 0;
+  {
+    std::lock_guard lock(mutex_);
+    for (int ty = y / tile_; ty <= (y + h - 1) / tile_; ++ty)
+      for (int tx = x / tile_; tx <= (x + w - 1) / tile_; ++tx) {
+        const auto it = tiles_.find(key(tx, ty));
+        if (it == tiles_.end()) {
+          ++missing;
+          continue;
+        }
+        lru_.splice(lru_.begin(), lru_, it->second.lru);
+        held.emplace(key(tx, ty), it->second.tile);
+      }
+  }
+  if (missing == 0) copy_rect(x, y, w, h, dst, dst_stride, [&held](int k) { return held.at(k); });
+  return missing;
+}
+
+template <class T>
+void TileCache<T>::request(int x, int y, int w, int h) const {
   const int tx0 = std::max(x, 0) / tile_, ty0 = std::max(y, 0) / tile_;
   const int tx1 = (std::min(x + w, width_) - 1) / tile_, ty1 = (std::min(y + h, height_) - 1) / tile_;
   if (tx1 < tx0 || ty1 < ty0 || x + w <= 0 || y + h <= 0) return;
@@ -136,7 +172,7 @@ void HeightTileCache::request(int x, int y, int w, int h) const {
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx) order.emplace_back(std::hypot(tx - cx, ty - cy), key(tx, ty));
   std::sort(order.begin(), order.end());
-  const std::size_t full_tile = static_cast<std::size_t>(tile_) * tile_ * sizeof(float);
+  const std::size_t full_tile = static_cast<std::size_t>(tile_) * tile_ * sizeof(T);
   const std::size_t fit = std::max<std::size_t>(1, budget_ / full_tile);
   if (order.size() > fit) order.resize(fit);
   {
@@ -157,7 +193,8 @@ void HeightTileCache::request(int x, int y, int w, int h) const {
   changed_.notify_all();
 }
 
-void HeightTileCache::loader_loop() {
+template <class T>
+void TileCache<T>::loader_loop() {
   std::unique_lock lock(mutex_);
   for (;;) {
     changed_.wait(lock, [this] { return stop_ || !queue_.empty(); });
@@ -181,22 +218,26 @@ void HeightTileCache::loader_loop() {
       ++stats_.prefetched;
     } else {
       last_error_ = error;
+      ++stats_.read_errors;
     }
     changed_.notify_all();
   }
 }
 
-void HeightTileCache::wait_idle() const {
+template <class T>
+void TileCache<T>::wait_idle() const {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [this] { return queue_.empty() && loading_.empty(); });
 }
 
-bool HeightTileCache::resident(int tx, int ty) const {
+template <class T>
+bool TileCache<T>::resident(int tx, int ty) const {
   std::lock_guard lock(mutex_);
   return tiles_.count(key(tx, ty)) > 0;
 }
 
-bool HeightTileCache::resident_rect(int x, int y, int w, int h) const {
+template <class T>
+bool TileCache<T>::resident_rect(int x, int y, int w, int h) const {
   const int x0 = std::max(x, 0), y0 = std::max(y, 0);
   const int x1 = std::min(x + w, width_) - 1, y1 = std::min(y + h, height_) - 1;
   std::lock_guard lock(mutex_);
@@ -206,14 +247,19 @@ bool HeightTileCache::resident_rect(int x, int y, int w, int h) const {
   return true;
 }
 
-HeightTileCache::Stats HeightTileCache::stats() const {
+template <class T>
+typename TileCache<T>::Stats TileCache<T>::stats() const {
   std::lock_guard lock(mutex_);
   return stats_;
 }
 
-std::string HeightTileCache::last_error() const {
+template <class T>
+std::string TileCache<T>::last_error() const {
   std::lock_guard lock(mutex_);
   return last_error_;
 }
+
+template class TileCache<float>;
+template class TileCache<Rgb8>;
 
 }  // namespace ig::terrain

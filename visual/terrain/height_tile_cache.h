@@ -1,7 +1,9 @@
 #pragma once
-// Heights of a DEM too large to hold whole, paged in square tiles into an
-// LRU cache bounded by a byte budget (issue 16: terrain beyond a memory
-// budget). No GL.
+// A grid too large to hold whole, paged in square tiles into an LRU cache
+// bounded by a byte budget (issue 16: terrain beyond a memory budget): the
+// heights of a DEM (HeightTileCache, float samples) and full-resolution
+// imagery (RgbTileCache, RGB8 pixels; terrain/imagery_loader.h). One
+// template, TileCache<T>, over the element type. No GL.
 //
 // Tile (tx, ty) holds samples [tx * T, min((tx + 1) * T, width)) x
 // [ty * T, min((ty + 1) * T, height)), row-major, row 0 = south like the
@@ -20,10 +22,13 @@
 //    background thread's read of that tile). Each such tile is a "miss",
 //    counted in Stats::misses: the frame log's page_waits.
 //
-// A third, for callers that must not block (a frame's look-at ray cast):
-//  * inside a NoWait scope on the calling thread, at() / read_rect() of a
-//    tile that is not resident queue it first for the background thread and
-//    throw TileNotResident instead of waiting (Stats::deferred; not a miss).
+// try_read_rect() never blocks: it copies a rectangle only when all of its
+// tiles are resident (the imagery window holds its place until they are).
+// And for callers that must not block but read through code that does not
+// know about paging (a frame's look-at ray cast): inside a NoWait scope on
+// the calling thread, at() / read_rect() of a tile that is not resident
+// queue it first for the background thread and throw TileNotResident
+// instead of waiting (Stats::deferred; not a miss).
 //
 // Eviction: least recently used first, after every insertion, until the
 // resident bytes are within the budget (at least one tile stays, so a
@@ -49,22 +54,45 @@
 
 namespace ig::terrain {
 
-// What at() / read_rect() throw inside a HeightTileCache::NoWait scope.
+// One imagery pixel (RGB8, 3 bytes, as GL_RGB / GL_UNSIGNED_BYTE reads it).
+struct Rgb8 {
+  std::uint8_t r, g, b;
+  bool operator==(const Rgb8& o) const { return r == o.r && g == o.g && b == o.b; }
+};
+static_assert(sizeof(Rgb8) == 3);
+
+// What at() / read_rect() throw inside a TileNoWait scope.
 struct TileNotResident : std::runtime_error {
-  TileNotResident() : std::runtime_error("height tile not resident") {}
+  TileNotResident() : std::runtime_error("tile not resident") {}
 };
 
-class HeightTileCache {
+// On this thread while it lives: reads of tiles that are not resident, from
+// any TileCache, throw TileNotResident (after queueing them) instead of
+// blocking. Nests.
+class TileNoWait {
  public:
-  using Tile = std::vector<float>;
+  TileNoWait();
+  ~TileNoWait();
+  TileNoWait(const TileNoWait&) = delete;
+  TileNoWait& operator=(const TileNoWait&) = delete;
+
+ private:
+  bool outer_;
+};
+
+template <class T>
+class TileCache {
+ public:
+  using Tile = std::vector<T>;
   // Fills `out` (already sized to the tile's samples) with tile (tx, ty).
   // May throw; a failed background read is retried by the next miss, whose
   // caller sees the exception.
-  using Reader = std::function<void(int tx, int ty, int x0, int y0, int w, int h, float* out)>;
+  using Reader = std::function<void(int tx, int ty, int x0, int y0, int w, int h, T* out)>;
 
   struct Stats {
     std::int64_t misses = 0;       // tiles a caller had to wait for (at / read_rect)
     std::int64_t prefetched = 0;   // tiles the background thread loaded
+    std::int64_t read_errors = 0;  // background reads that threw (last_error() says why)
     std::int64_t evictions = 0;
     std::int64_t deferred = 0;     // TileNotResident thrown in a NoWait scope
     std::size_t resident_bytes = 0;
@@ -72,23 +100,12 @@ class HeightTileCache {
     int resident_tiles = 0;
   };
 
-  // On this thread while it lives: reads of tiles that are not resident
-  // throw TileNotResident (after queueing them) instead of blocking. Nests.
-  class NoWait {
-   public:
-    NoWait();
-    ~NoWait();
-    NoWait(const NoWait&) = delete;
-    NoWait& operator=(const NoWait&) = delete;
+  using NoWait = TileNoWait;
 
-   private:
-    bool outer_;
-  };
-
-  HeightTileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader);
-  ~HeightTileCache();
-  HeightTileCache(const HeightTileCache&) = delete;
-  HeightTileCache& operator=(const HeightTileCache&) = delete;
+  TileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader);
+  ~TileCache();
+  TileCache(const TileCache&) = delete;
+  TileCache& operator=(const TileCache&) = delete;
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -98,9 +115,13 @@ class HeightTileCache {
   std::size_t budget_bytes() const { return budget_; }
 
   // Sample (i, j), 0 <= i < width, 0 <= j < height.
-  float at(int i, int j) const;
-  // Samples [x, x + w) x [y, y + h) into dst, rows dst_stride floats apart.
-  void read_rect(int x, int y, int w, int h, float* dst, std::size_t dst_stride) const;
+  T at(int i, int j) const;
+  // Samples [x, x + w) x [y, y + h) into dst, rows dst_stride elements apart.
+  void read_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride) const;
+  // The same without waiting: copies only if every tile of the rectangle is
+  // resident (marking them recently used) and returns 0; otherwise copies
+  // nothing and returns how many are not (nothing is queued or counted).
+  int try_read_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride) const;
   // Queues the tiles of [x, x + w) x [y, y + h) (clipped to the DEM) that
   // are not resident for the background thread; marks the resident ones
   // recently used.
@@ -108,7 +129,7 @@ class HeightTileCache {
   // Blocks until the background thread has nothing queued or loading.
   void wait_idle() const;
   bool resident(int tx, int ty) const;
-  // Every tile of [x, x + w) x [y, y + h) (clipped to the DEM) is resident.
+  // Every tile of [x, x + w) x [y, y + h) (clipped to the grid) is resident.
   bool resident_rect(int x, int y, int w, int h) const;
   Stats stats() const;
   // The last background read error ("" if none).
@@ -123,6 +144,8 @@ class HeightTileCache {
   int key(int tx, int ty) const { return ty * tiles_x_ + tx; }
   TilePtr load(int k) const;                     // reads tile k (no lock held)
   TilePtr get(int k) const;                      // resident or paged in now (a miss)
+  template <class Fetch>
+  void copy_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride, Fetch&& fetch) const;
   void insert_locked(int k, TilePtr t) const;    // + eviction
   void loader_loop();
 
@@ -142,5 +165,10 @@ class HeightTileCache {
   bool stop_ = false;
   std::thread loader_;
 };
+
+using HeightTileCache = TileCache<float>;
+using RgbTileCache = TileCache<Rgb8>;
+extern template class TileCache<float>;
+extern template class TileCache<Rgb8>;
 
 }  // namespace ig::terrain

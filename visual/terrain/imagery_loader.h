@@ -5,17 +5,46 @@
 // texture coordinate (s + 0.5) / dem_size lands on sample s as the shaders
 // expect; an image without georeferencing is taken to span the DEM exactly
 // (the old behaviour). Georeferenced imagery finer than the texture limit is
-// kept at full resolution (for the scene's imagery window, render/
-// imagery_window_texture.h) plus an overview of it that fits one texture
-// (issue 16). No GL here. docs/terrain-data.md.
+// paged at full resolution (issue 16): tiles are read on demand from a GDAL
+// warped VRT onto the footprint (the same extent, size, bilinear resampling
+// and destination alpha as the in-memory warp of imagery that fits) into an
+// RgbTileCache within a byte budget (for the scene's imagery window,
+// render/imagery_window_texture.h); one pass over it in strips at load makes
+// the overview that fits one texture and counts the uncovered pixels. No GL
+// here. docs/terrain-data.md.
 
+#include <atomic>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "terrain/height_tile_cache.h"
 #include "terrain/heightfield.h"
 
 namespace ig::terrain {
+
+// Full-resolution imagery beyond the texture limit, paged (issue 16).
+struct PagedImagery {
+  // full_width() x full_height() pixels, row 0 = south; uncovered pixels
+  // grey (128), as in the one-texture image.
+  std::shared_ptr<const RgbTileCache> cache;
+  // Tiles whose read failed after the load (corrupt or vanished file): drawn
+  // grey, counted here and logged (the first few), never thrown.
+  std::shared_ptr<std::atomic<std::int64_t>> failed_tiles = std::make_shared<std::atomic<std::int64_t>>(0);
+};
+
+// How imagery beyond the texture limit is paged.
+struct ImageryPaging {
+  std::size_t budget_bytes = std::size_t(512) << 20;  // terrain.imagery_budget_mb
+  int tile = 256;                                     // pixels a tile side
+  // The window the cache serves (render/imagery_window_texture.h): the
+  // budget is raised to at least what it needs with a tile of margin
+  // (imagery_window_budget), or the window could never move.
+  int window_side = 4096;
+};
+std::size_t imagery_window_budget(int window_side, int tile);
 
 struct Imagery {
   // What one texture holds over the whole footprint: the image, or beyond
@@ -27,25 +56,21 @@ struct Imagery {
   std::vector<std::uint8_t> rgb;  // width * height * 3, row 0 = SOUTH (as the DEM)
   bool warped = false;            // reprojected / resampled onto the DEM's footprint
   std::int64_t uncovered = 0;     // full-resolution pixels of the footprint the image does not cover (grey)
-  // Beyond the limit only: the full resolution over the footprint, row 0 =
-  // south; empty when the image fits (then full size = width x height).
+  // Beyond the limit only: the full resolution over the footprint, paged;
+  // null when the image fits (then full size = width x height).
   int full_step = 1, full_w = 0, full_h = 0;
-  std::vector<std::uint8_t> full_rgb;
+  std::shared_ptr<const PagedImagery> paged;
   int full_width() const { return full_step > 1 ? full_w : width; }
   int full_height() const { return full_step > 1 ? full_h : height; }
 };
 
-// At most this many bytes of full-resolution imagery are held (RGB, in
-// memory, not paged): finer imagery is resampled down to it (~18900^2 RGB;
-// loading needs about 2.7 times that at its peak: the warp's RGBA and the read).
-constexpr std::int64_t kMaxFullImageryBytes = std::int64_t(1) << 30;
-
 // Loads `path` for `hf`. A georeferenced image gets about its own resolution
 // over the DEM (at least one pixel per DEM sample); beyond max_side (the
-// texture limit) a side it also gets an overview within max_side. An image
+// texture limit) a side it is paged (as `paging` says) and gets an overview
+// within max_side; resident memory stays near overview + budget. An image
 // without georeferencing must fit max_side. Throws DemError ("<path>:
 // <reason>") for an unreadable file, an image with no colour bands, or a
 // georeferenced image that does not overlap the DEM at all.
-Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_side);
+Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_side, const ImageryPaging& paging = {});
 
 }  // namespace ig::terrain

@@ -12,12 +12,11 @@
 
 #include <epoxy/gl.h>
 
-#include <glm/common.hpp>
-
 #include "gl/gl_context.h"
 #include "gl/gl_objects.h"
 #include "render/height_window_texture.h"
 #include "terrain/heightfield.h"
+#include "window_path_checks.h"
 
 namespace {
 
@@ -54,35 +53,16 @@ TEST(HeightWindowTexture, ToroidalUpdatesMatchTheFullTexture) {
   constexpr int kSize = 16;
   ig::render::HeightWindowTexture window(hf, kSize);
   ASSERT_EQ(window.size(), glm::ivec2(kSize, kSize));
-  const std::vector<glm::ivec2> path = {{40, 30}, {41, 30}, {41, 31}, {44, 35}, {43, 34}, {30, 20}, {31, 21},
-                                        {0, 0},   {3, 2},   {96, 74}, {90, 70}, {50, 40}, {52, 37}, {48, 44},
-                                        {63, 47}, {64, 48}, {79, 63}, {60, 30}, {60, 30}};
-  long long expected_total = 0;
-  glm::ivec2 prev{};
-  bool first = true;
-  for (const glm::ivec2 c : path) {
-    SCOPED_TRACE(testing::Message() << "centre " << c.x << "," << c.y);
-    const long long uploaded = window.centre_on(c);
-    const glm::ivec2 o = window.origin();
-    // Only what scrolled in: the window's area minus its overlap with the last one.
-    const glm::ivec2 d = first ? glm::ivec2(kSize) : glm::abs(o - prev);
-    const long long overlap = static_cast<long long>(std::max(kSize - d.x, 0)) * std::max(kSize - d.y, 0);
-    EXPECT_EQ(uploaded, first ? kSize * kSize : kSize * kSize - overlap);
-    expected_total += uploaded;
-    first = false;
-    prev = o;
-    EXPECT_GE(o.x, 0);
-    EXPECT_GE(o.y, 0);
-    EXPECT_LE(o.x + kSize, hf.width);
-    EXPECT_LE(o.y + kSize, hf.height);
-    const std::vector<float> texels = read_texture(window.id(), kSize, kSize);
-    for (int j = o.y; j < o.y + kSize; ++j)
-      for (int i = o.x; i < o.x + kSize; ++i)
-        ASSERT_EQ(texels[static_cast<std::size_t>(j % kSize) * kSize + i % kSize],
-                  full_texels[static_cast<std::size_t>(j) * hf.width + i])
-            << "sample " << i << "," << j;
-  }
-  EXPECT_EQ(window.uploaded_samples(), expected_total);
+  const long long total = window_checks::expect_window_follows_path<float>(
+      kSize, hf.width, full_texels, 1, [&](glm::ivec2 c) { return window.centre_on(c); },
+      [&] { return window.origin(); }, [&] { return read_texture(window.id(), kSize, kSize); },
+      [&](glm::ivec2, glm::ivec2 o) {
+        EXPECT_GE(o.x, 0);
+        EXPECT_GE(o.y, 0);
+        EXPECT_LE(o.x + kSize, hf.width);
+        EXPECT_LE(o.y + kSize, hf.height);
+      });
+  EXPECT_EQ(window.uploaded_samples(), total);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

@@ -153,7 +153,49 @@ TEST(HeightTileCache, ReadErrorsReachTheCallerAndTheBackgroundErrorIsKept) {
   cache.request(32, 0, 16, 16);
   cache.wait_idle();
   EXPECT_EQ(cache.last_error(), "tile 2 unreadable");
+  EXPECT_EQ(cache.stats().read_errors, 1);
   EXPECT_FALSE(cache.resident(2, 0));
+}
+
+// try_read_rect never reads: a rectangle with a tile that is not resident is
+// refused (nothing copied, nothing counted as a miss), one all resident is
+// copied exactly as read_rect would.
+TEST(HeightTileCache, TryReadRectCopiesOnlyWhenEveryTileIsResident) {
+  std::atomic<int> reads{0};
+  HeightTileCache cache(100, 75, 16, 64 * kTileBytes, synthetic(&reads));
+  std::vector<float> dst(30 * 20, -1.f);
+  EXPECT_EQ(cache.try_read_rect(10, 10, 30, 20, dst.data(), 30), 6);  // tiles 0..2 x 0..1
+  EXPECT_EQ(reads.load(), 0);
+  EXPECT_EQ(dst[0], -1.f);
+  cache.at(10, 10);  // one of them in
+  EXPECT_EQ(cache.try_read_rect(10, 10, 30, 20, dst.data(), 30), 5);
+  EXPECT_EQ(dst[0], -1.f);
+  cache.request(10, 10, 30, 20);
+  cache.wait_idle();
+  EXPECT_EQ(cache.try_read_rect(10, 10, 30, 20, dst.data(), 30), 0);
+  for (int r = 0; r < 20; ++r)
+    for (int c = 0; c < 30; ++c) ASSERT_EQ(dst[r * 30 + c], value(10 + c, 10 + r));
+  EXPECT_EQ(cache.stats().misses, 1);  // only at()
+}
+
+// The same cache over RGB pixels (RgbTileCache, the paged imagery's):
+// 3 bytes a pixel in the budget, ragged edge tiles, LRU within the budget.
+TEST(RgbTileCache, PixelsMatchAndTheBudgetCountsThreeBytesAPixel) {
+  auto colour = [](int i, int j) { return Rgb8{std::uint8_t(i), std::uint8_t(j), std::uint8_t(i ^ j)}; };
+  constexpr std::size_t kRgbTile = 16 * 16 * 3;
+  RgbTileCache cache(70, 50, 16, 4 * kRgbTile, [&](int, int, int x0, int y0, int w, int h, Rgb8* out) {
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) out[r * w + c] = colour(x0 + c, y0 + r);
+  });
+  std::vector<Rgb8> all(70 * 50);
+  cache.read_rect(0, 0, 70, 50, all.data(), 70);
+  for (int j = 0; j < 50; ++j)
+    for (int i = 0; i < 70; ++i) ASSERT_EQ(all[j * 70 + i], colour(i, j)) << i << "," << j;
+  const auto s = cache.stats();
+  EXPECT_EQ(s.misses, 5 * 4);
+  EXPECT_LE(s.peak_resident_bytes, 4 * kRgbTile);
+  EXPECT_GT(s.evictions, 0);
+  EXPECT_EQ(cache.at(69, 49), colour(69, 49));
 }
 
 }  // namespace
