@@ -104,3 +104,8 @@ set_tests_properties(cli.serve.multicast_three_channels PROPERTIES LABELS "cli;n
 ig_cli_failure_test(cli.serve.no_source "no pose source.*exit=2" "'$<TARGET_FILE:ig>' serve --frames 1")
 ig_cli_failure_test(cli.serve.bad_endpoint "port must be 0..65535.*exit=[1-9]"
   "'$<TARGET_FILE:ig>' serve --udp 127.0.0.1:99999 --frames 1")
+# ig send --record writes a recording instead of sending: not with a socket or a flood.
+ig_cli_failure_test(cli.send.record_with_flood "--record: not with --flood.*exit=2"
+  "'$<TARGET_FILE:ig-send>' '${CMAKE_SOURCE_DIR}/scenarios/default.json' --record /dev/null --flood 10")
+ig_cli_failure_test(cli.send.record_with_to "excludes.*exit=2"
+  "'$<TARGET_FILE:ig-send>' '${CMAKE_SOURCE_DIR}/scenarios/default.json' --record /dev/null --to 127.0.0.1:47999")
