@@ -6,7 +6,7 @@
 
 #include "io/wire/cigi_queries.h"
 #include "load/cigi_request_mix.h"
-#include "terrain/georef.h"
+#include "terrain/test/ramp_terrain.h"
 
 namespace {
 
@@ -14,20 +14,10 @@ using namespace ig::io::wire;
 using ig::load::CigiRequestMix;
 using ig::load::RequestLoad;
 
-ig::terrain::Heightfield make_terrain(bool geographic = true) {
-  ig::terrain::Heightfield hf;
-  hf.width = hf.height = 65;
-  hf.spacing_x_m = hf.spacing_y_m = 30.0;
-  hf.heights.resize(std::size_t(hf.width) * hf.height);
-  for (int j = 0; j < hf.height; ++j)
-    for (int i = 0; i < hf.width; ++i) hf.ref(i, j) = float(100.0 + 3.0 * i + 0.5 * ((i * 7 + j * 13) % 11));
-  hf.finalize_stats();
-  if (geographic) hf.georef = ig::terrain::make_geographic_georef(37.0, -118.0, 30.0, 30.0);
-  return hf;
-}
+using ig::terrain::test::make_ramp_terrain;
 
 TEST(CigiRequestMix, MixOfRequestTypesInAlternatingByteOrder) {
-  const auto hf = make_terrain();
+  const auto hf = make_ramp_terrain();
   CigiRequestMix mix(hf);
   const RequestLoad load{30, 10, 0.0};
   for (std::uint32_t frame = 1; frame <= 2; ++frame) {
@@ -66,7 +56,7 @@ TEST(CigiRequestMix, MixOfRequestTypesInAlternatingByteOrder) {
 }
 
 TEST(CigiRequestMix, SameSeedSameLoad) {
-  const auto hf = make_terrain();
+  const auto hf = make_ramp_terrain();
   CigiRequestMix a(hf), b(hf), c(hf, 16);
   const RequestLoad load{12, 6, 500.0};
   for (std::uint32_t frame = 1; frame <= 3; ++frame) {
@@ -77,7 +67,7 @@ TEST(CigiRequestMix, SameSeedSameLoad) {
 }
 
 TEST(CigiRequestMix, SpreadKeepsPointsNearTheOwnship) {
-  const auto hf = make_terrain();
+  const auto hf = make_ramp_terrain();
   CigiRequestMix mix(hf);
   const auto own = mix.geodetic(mix.ownship_at());
   const auto far = mix.geodetic(mix.ownship_at() + glm::dvec3(200.0, 200.0, 0.0));
@@ -91,7 +81,7 @@ TEST(CigiRequestMix, SpreadKeepsPointsNearTheOwnship) {
 }
 
 TEST(CigiRequestMix, NeedsAGeographicDem) {
-  const auto hf = make_terrain(false);
+  const auto hf = make_ramp_terrain(false);
   EXPECT_THROW(CigiRequestMix{hf}, std::runtime_error);
 }
 

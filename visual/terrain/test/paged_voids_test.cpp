@@ -5,10 +5,7 @@
 // load fills them; deeper ones are counted (PagedHeights::inexact_voids)
 // and are the only samples that differ; the pyramid built at load bounds
 // the heights the tiles serve either way.
-#include <cpl_conv.h>
-#include <gdal.h>
 #include <gtest/gtest.h>
-#include <ogr_srs_api.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -24,6 +21,7 @@
 #include "terrain/height_pyramid.h"
 #include "terrain/heightfield_overview.h"
 #include "terrain/paged_heights.h"
+#include "terrain/test/test_geotiff.h"
 
 namespace ig::terrain {
 namespace {
@@ -50,25 +48,10 @@ std::vector<float> make_heights(int w, int h, const std::vector<Rect>& voids) {
 }
 
 std::string write_geotiff(const fs::path& path, int w, int h, const std::vector<float>& south_first) {
-  GDALAllRegister();
-  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), w, h, 1, GDT_Float32, nullptr);
-  EXPECT_NE(ds, nullptr);
-  double gt[6] = {-119.0, 1.0 / 1200, 0.0, 37.5, 0.0, -1.0 / 1200};
-  GDALSetGeoTransform(ds, gt);
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRImportFromEPSG(srs, 4326);
-  char* wkt = nullptr;
-  OSRExportToWkt(srs, &wkt);
-  GDALSetProjection(ds, wkt);
-  CPLFree(wkt);
-  OSRDestroySpatialReference(srs);
-  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
-  GDALSetRasterNoDataValue(band, kNodata);
   std::vector<float> file(south_first.size());  // file rows north first
   for (int r = 0; r < h; ++r)
     std::copy_n(south_first.begin() + std::ptrdiff_t(h - 1 - r) * w, w, file.begin() + std::ptrdiff_t(r) * w);
-  EXPECT_EQ(GDALRasterIO(band, GF_Write, 0, 0, w, h, file.data(), w, h, GDT_Float32, 0, 0), CE_None);
-  GDALClose(ds);
+  test::write_test_geotiff(path.string(), w, h, file, kNodata);
   return path.string();
 }
 
