@@ -213,6 +213,19 @@ void print(const char* name, const RunResult& r) {
 }
 
 // Roll angle about body y relative to a level attitude at heading 30 (continuous, unwrapped by the caller).
+// Frame to frame: the most the sample time ran back (s) and the largest position step (m).
+struct FrameSteps {
+  double back = 0.0, worst = 0.0;
+};
+FrameSteps frame_steps(const RunResult& r) {
+  FrameSteps f;
+  for (size_t k = 1; k < r.out.size(); ++k) {
+    f.back = std::max(f.back, r.out[k - 1].sample_time_s - r.out[k].sample_time_s);
+    f.worst = std::max(f.worst, glm::length(r.out[k].position - r.out[k - 1].position));
+  }
+  return f;
+}
+
 double roll_of(const glm::dquat& q) { return ig::io::hpr_from_attitude(q).roll_deg; }
 double unwrap_step(double from, double to) { return std::remainder(to - from, 360.0); }
 
@@ -289,9 +302,7 @@ TEST(StiffMotionFilter, HostClockJumpsBackAndForth) {
   EXPECT_LT(r.env.worst_att_excess, 1e-7);
   // Frame to frame the pose moves at most as the aircraft does over a frame
   // plus the playout delay it may skip or repeat at a reset (150 m/s).
-  double worst = 0.0;
-  for (size_t k = 1; k < r.out.size(); ++k)
-    worst = std::max(worst, glm::length(r.out[k].position - r.out[k - 1].position));
+  const double worst = frame_steps(r).worst;
   std::printf("[stiff] host clock jumps: largest frame-to-frame step %.2f m (2.5 m per frame at 150 m/s)\n", worst);
   EXPECT_LT(worst, 150.0 * (1.0 / kRate + 0.1));
 }
@@ -307,11 +318,7 @@ TEST(StiffMotionFilter, IgClockStepsBack) {
   EXPECT_EQ(r.non_finite, 0);
   EXPECT_LT(r.env.worst_pos_excess, 1e-6);
   EXPECT_LT(r.env.worst_att_excess, 1e-7);
-  double back = 0.0, worst = 0.0;
-  for (size_t k = 1; k < r.out.size(); ++k) {
-    back = std::max(back, r.out[k - 1].sample_time_s - r.out[k].sample_time_s);
-    worst = std::max(worst, glm::length(r.out[k].position - r.out[k - 1].position));
-  }
+  const auto [back, worst] = frame_steps(r);
   std::printf("[stiff] IG clock steps back: timeline ran back by %.4f s, largest frame step %.2f m\n", back, worst);
   EXPECT_LE(back, 0.0) << "the past was replayed";
   EXPECT_LT(worst, 150.0 * (1.0 / kRate + 0.1));
@@ -327,11 +334,7 @@ TEST(StiffMotionFilter, IgClockStepsForward) {
   EXPECT_EQ(r.non_finite, 0);
   EXPECT_LT(r.env.worst_pos_excess, 1e-6);
   EXPECT_LT(r.env.worst_att_excess, 1e-7);
-  double back = 0.0, worst = 0.0;
-  for (size_t k = 1; k < r.out.size(); ++k) {
-    back = std::max(back, r.out[k - 1].sample_time_s - r.out[k].sample_time_s);
-    worst = std::max(worst, glm::length(r.out[k].position - r.out[k - 1].position));
-  }
+  const auto [back, worst] = frame_steps(r);
   // The playout instant ran ahead by the step, but the pose only by the
   // 0.2 s extrapolation limit: stepping back onto the timeline moves it back
   // by at most that plus one playout delay of motion.

@@ -18,7 +18,8 @@
 // answers that came back before the frame's Start Of Frame.
 //
 // --bench: no checks; HOT HAT/HOT and LOS requests (half segments, half
-// vectors, 5-20 km) every frame at most 60 frames a second, and the time
+// vectors, 5-20 km; tools/load/cigi_request_mix.h, the load of the
+// in-process bench_host_services) every frame at most 60 frames a second, and the time
 // from sending a frame to receiving its answers (docs/results.md). HAT/HOT
 // points are spread over the whole DEM, or within SPREAD_M of the ownship.
 //
@@ -51,6 +52,7 @@
 #include "io/wire/cigi_queries.h"
 #include "io/wire/cigi_views.h"
 #include "io/wire/native_query.h"
+#include "load/cigi_request_mix.h"
 #include "terrain/dem_loader.h"
 #include "terrain/earth_curvature.h"
 
@@ -190,52 +192,16 @@ int main(int argc, char** argv) {
   if (bench) {
     const int n_hot = std::stoi(argv[6]), n_los = std::stoi(argv[7]);
     const double spread = argc == 9 ? std::stod(argv[8]) : 0.0;
-    const dvec3 own_at(0.5 * hf.extent_x_m(), 0.4 * hf.extent_y_m(), 4000.0);
-    std::uniform_real_distribution<double> near(-spread, spread);
+    const ig::load::RequestLoad load{n_hot, n_los, spread};
+    ig::load::CigiRequestMix mix(hf);  // the load of bench_host_services
+    PoseMessage ownship;
+    ownship.frame = PoseMessage::Frame::Geodetic;
+    ownship.position = mix.geodetic(mix.ownship_at());
     std::vector<double> latency_ms;
     auto tick = std::chrono::steady_clock::now();
     std::size_t answers = 0;
     for (int k = 1; k <= frames; ++k) {
-      const bool swap = k % 2 == 1;
-      PoseMessage ownship;
-      ownship.frame = PoseMessage::Frame::Geodetic;
-      ownship.position = geodetic(own_at);
-      std::vector<std::uint8_t> d = encode_cigi_host_datagram(std::uint32_t(k), kCigiModeOperate, ownship, swap);
-      auto add = [&](const auto& packet) { d.insert(d.end(), packet.begin(), packet.end()); };
-      for (int n = 0; n < n_hot; ++n) {
-        HatHotRequest r;
-        r.id = std::uint16_t(n);
-        r.type = HatHotType(n % 3);
-        r.point = geodetic(spread > 0 ? dvec3(own_at.x + near(rng), own_at.y + near(rng), 3000.0)
-                                      : dvec3(ux(rng), uy(rng), 3000.0));
-        add(encode_cigi_hat_hot_request(r, swap));
-      }
-      for (int n = 0; n < n_los; ++n) {
-        const dvec3 a(ux(rng), uy(rng), 0.0);
-        const double az = uaz(rng) * M_PI / 180, dist = 5000.0 + 15000.0 * (n % 7) / 6.0;
-        const dvec3 from(a.x, a.y, hf.sample_surface(a.x, a.y) + 2000.0);
-        if (n % 2 == 0) {
-          LosSegmentRequest r;
-          r.id = std::uint16_t(n);
-          r.extended = true;
-          r.source = geodetic(from);
-          dvec3 to = from + dist * dvec3(std::sin(az), std::cos(az), 0.0);
-          to.x = std::clamp(to.x, 0.0, hf.extent_x_m());
-          to.y = std::clamp(to.y, 0.0, hf.extent_y_m());
-          to.z = hf.sample_surface(to.x, to.y);
-          r.destination = geodetic(to);
-          add(encode_cigi_los_segment_request(r, swap));
-        } else {
-          LosVectorRequest r;
-          r.id = std::uint16_t(n);
-          r.extended = true;
-          r.source = geodetic(from);
-          r.azimuth_deg = float(az * 180 / M_PI);
-          r.elevation_deg = float(-5.0 - 25.0 * (n % 5) / 4.0);
-          r.max_range_m = float(dist);
-          add(encode_cigi_los_vector_request(r, swap));
-        }
-      }
+      const std::vector<std::uint8_t> d = mix.datagram(std::uint32_t(k), load, ownship);
       const auto sent = std::chrono::steady_clock::now();
       to_ig.send(d);
       for (;;) {

@@ -6,7 +6,8 @@
 // sockets or rendering: every frame one CIGI host datagram with N HAT/HOT
 // requests (a third each HAT, HOT, extended) and N extended LOS requests
 // (half segments, half vectors, 5-20 km, 2000 m above the terrain, 5-30°
-// down) is taken and answered. Between frames 128 MB are written, as the
+// down; tools/load/cigi_request_mix.h, the same generator as the loopback
+// host cigi_query_host --bench) is taken and answered. Between frames 128 MB are written, as the
 // renderer does, so the DEM is out of the caches as it is in ig serve. Prints
 // milliseconds per frame (mean / median / p95 / max) for take(), answer_frame()
 // (what summary.json reports as answer_ms) and encoding the responses,
@@ -16,16 +17,15 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "ig/host_services.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
+#include "load/cigi_request_mix.h"
 #include "session/scene_setup.h"
 #include "terrain/dem_loader.h"
 #include "terrain/earth_curvature.h"
@@ -35,75 +35,10 @@ namespace {
 
 using namespace ig::io::wire;
 using Clock = std::chrono::steady_clock;
-using glm::dvec3;
+using ig::load::CigiRequestMix;
+using Load = ig::load::RequestLoad;
 
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-struct Load {
-  int hot = 1000, los = 100;
-  double spread_m = 0.0;  // HAT/HOT points within this of the ownship; 0: the whole DEM
-};
-
-// One frame's host datagram, generated like tests/tools/cigi_query_host --bench.
-class RequestMaker {
- public:
-  explicit RequestMaker(const ig::terrain::Heightfield& hf)
-      : hf_(hf),
-        to_geodetic_(ig::session::local_to_geodetic(hf)),
-        ux_(0.05 * hf.extent_x_m(), 0.95 * hf.extent_x_m()),
-        uy_(0.05 * hf.extent_y_m(), 0.95 * hf.extent_y_m()) {}
-
-  dvec3 own_at() const { return {0.5 * hf_.extent_x_m(), 0.4 * hf_.extent_y_m(), 4000.0}; }
-
-  std::vector<std::uint8_t> datagram(std::uint32_t frame, const Load& load) {
-    const bool swap = frame % 2 == 1;
-    std::vector<std::uint8_t> d = encode_cigi_host_datagram(frame, kCigiModeOperate, {}, swap);
-    auto add = [&](const auto& packet) { d.insert(d.end(), packet.begin(), packet.end()); };
-    std::uniform_real_distribution<double> near(-load.spread_m, load.spread_m), uaz(-180.0, 180.0);
-    for (int n = 0; n < load.hot; ++n) {
-      HatHotRequest r;
-      r.id = std::uint16_t(n);
-      r.type = HatHotType(n % 3);
-      r.point = geodetic(load.spread_m > 0 ? dvec3(own_at().x + near(rng_), own_at().y + near(rng_), 3000.0)
-                                           : dvec3(ux_(rng_), uy_(rng_), 3000.0));
-      add(encode_cigi_hat_hot_request(r, swap));
-    }
-    for (int n = 0; n < load.los; ++n) {
-      const double x = ux_(rng_), y = uy_(rng_);
-      const double az = uaz(rng_) * M_PI / 180, dist = 5000.0 + 15000.0 * (n % 7) / 6.0;
-      const dvec3 from(x, y, hf_.sample_surface(x, y) + 2000.0);
-      if (n % 2 == 0) {
-        LosSegmentRequest r;
-        r.id = std::uint16_t(n);
-        r.extended = true;
-        r.source = geodetic(from);
-        dvec3 to = from + dist * dvec3(std::sin(az), std::cos(az), 0.0);
-        to.x = std::clamp(to.x, 0.0, hf_.extent_x_m());
-        to.y = std::clamp(to.y, 0.0, hf_.extent_y_m());
-        to.z = hf_.sample_surface(to.x, to.y);
-        r.destination = geodetic(to);
-        add(encode_cigi_los_segment_request(r, swap));
-      } else {
-        LosVectorRequest r;
-        r.id = std::uint16_t(n);
-        r.extended = true;
-        r.source = geodetic(from);
-        r.azimuth_deg = float(az * 180 / M_PI);
-        r.elevation_deg = float(-5.0 - 25.0 * (n % 5) / 4.0);
-        r.max_range_m = float(dist);
-        add(encode_cigi_los_vector_request(r, swap));
-      }
-    }
-    return d;
-  }
-
- private:
-  dvec3 geodetic(const dvec3& local) { return *to_geodetic_(local); }
-  const ig::terrain::Heightfield& hf_;
-  std::function<std::optional<dvec3>(const dvec3&)> to_geodetic_;
-  std::mt19937_64 rng_{15};
-  std::uniform_real_distribution<double> ux_, uy_;
-};
 
 // What rendering a frame does to the caches: writes far more than they hold.
 class CacheFlusher {
@@ -134,14 +69,14 @@ Figures run(const ig::terrain::Heightfield& hf, const ig::terrain::HeightPyramid
             int frames, bool flush) {
   ig::app::HostServices services(hf, ig::terrain::kEarthRadiusM, ig::session::geodetic_placer(hf),
                                  ig::session::local_to_geodetic(hf), {}, &pyramid);
-  RequestMaker maker(hf);
+  CigiRequestMix maker(hf);
   ig::io::Pose own;
-  own.position = maker.own_at();
+  own.position = maker.ownship_at();
   CacheFlusher flush_caches;
   const std::array<std::uint8_t, kCigiStartOfFrameSize> sof{};
   Figures f;
   for (int k = 1; k <= frames; ++k) {
-    const std::vector<std::uint8_t> d = maker.datagram(std::uint32_t(k), load);
+    const std::vector<std::uint8_t> d = maker.datagram(std::uint32_t(k), load, {});
     if (flush) flush_caches();
     auto t0 = Clock::now();
     services.take(d);

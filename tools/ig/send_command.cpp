@@ -26,6 +26,7 @@
 #include "io/wire/canaerospace.h"
 #include "io/path_interpolator.h"
 #include "io/pose_intake.h"
+#include "io/recording.h"
 #include "io/wire/cigi.h"
 #include "io/wire/fgnetfdm.h"
 #include "io/wire/native.h"
@@ -40,6 +41,7 @@ constexpr const char* kUsage =
     "               [--jitter-ms J] [--reorder P] [--duplicate P] [--corrupt P] [--seed N]\n"
     "               [--flood N] [--cigi-listen ADDR:PORT [--cigi-sync]] [--log FILE] [--quiet]\n"
     "               [--no-timestamp] [--pairs N] [--stall-every N [--stall-ms A,B]]\n"
+    "       ig send SCENARIO.json --record FILE [--protocol ...] [options as above but --flood]\n"
     "       ig send SCENARIO.json --can IFNAME [--can-fd] [--can-node N] [--can-altitude 320|322|332]\n"
     "               [--can-float-position] [--rate HZ] [--duration S] [impairments as above]\n"
     "  --flood N sends N packets as fast as the socket takes them (no pacing).\n"
@@ -52,6 +54,9 @@ constexpr const char* kUsage =
     "                  FlightGear's main loop does.\n"
     "  --cigi-sync     CIGI synchronous host: wait for the IG's Start Of Frame echoing each\n"
     "                  host frame before sending the next (needs --cigi-listen).\n"
+    "  --record FILE writes the datagrams to an IG recording (ig serve --record's format)\n"
+    "  instead of sending them, each received when it would have been sent, at once (no\n"
+    "  pacing, no socket): ig run --recording FILE replays them on a simulated clock.\n"
     "  --can IFNAME sends each pose as CANaerospace frames (geodetic position), or with\n"
     "  --can-fd as one 64-byte CAN FD pose frame (docs/can.md); impairments act per pose.\n";
 
@@ -65,7 +70,7 @@ struct Args {
   int burst_length = 10;
   unsigned seed = 1;
   std::optional<int> flood;
-  std::optional<std::string> cigi_listen, log, can;
+  std::optional<std::string> cigi_listen, log, can, record;
   bool can_fd = false, can_float_position = false;
   bool no_timestamp = false, cigi_sync = false;
   int pairs = 0, stall_every = 0;
@@ -101,8 +106,9 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_option("--stall-every", args.stall_every)->check(positive_int());
   app.add_option("--stall-ms", stall_ms);
   app.add_option("--log", args.log);
+  auto* record = app.add_option("--record", args.record)->excludes(to)->excludes(cigi_listen);
   app.add_flag("--quiet", args.quiet);
-  auto* can = app.add_option("--can", args.can)->excludes(to);
+  auto* can = app.add_option("--can", args.can)->excludes(to)->excludes(record);
   app.add_flag("--can-fd", args.can_fd)->needs(can);
   app.add_flag("--can-float-position", args.can_float_position)->needs(can);
   app.add_option("--can-node", args.can_node)->check(can_node_id());
@@ -120,7 +126,8 @@ Args parse_args(const std::vector<std::string>& a) {
   }
   if (args.cigi_sync && args.protocol != io::Protocol::Cigi) throw UsageError("--cigi-sync needs --protocol cigi");
   if (args.pairs == 1) throw UsageError("--pairs: N must be at least 2");
-  if (args.to.empty() && !args.can) throw UsageError("missing --to ADDR:PORT (or --can IFNAME)");
+  if (args.record && args.flood) throw UsageError("--record: not with --flood (a flood has no schedule)");
+  if (args.to.empty() && !args.can && !args.record) throw UsageError("missing --to ADDR:PORT (or --can IFNAME)");
 #ifndef IG_WITH_CAN
   if (args.can) throw UsageError("--can: this ig was built without SocketCAN (IG_WITH_CAN=OFF)");
 #endif
@@ -160,7 +167,9 @@ int run(const Args& args) {
                              " needs geodetic positions but the terrain has no geographic georeference "
                              "(give terrain.generator.origin or use --protocol native)");
   std::unique_ptr<io::net::UdpSender> sender;
-  if (!args.can) sender = std::make_unique<io::net::UdpSender>(args.to);
+  std::unique_ptr<io::RecordingWriter> recording;
+  if (args.record) recording = std::make_unique<io::RecordingWriter>(*args.record);
+  else if (!args.can) sender = std::make_unique<io::net::UdpSender>(args.to);
 #ifdef IG_WITH_CAN
   // A CAN interface that goes down or away mid-stream is reopened every
   // 0.1 s; the poses meanwhile are counted as refused.
@@ -189,7 +198,9 @@ int run(const Args& args) {
   const double duration = args.duration_s.value_or(scenario.duration_s);
   const int count = args.flood ? *args.flood : int(std::floor(duration * args.rate_hz + 1e-9)) + 1;
   const double period = 1.0 / args.rate_hz;
-  const double start = io::net::steady_now_s() + 0.05;  // a moment to open the receiver's socket
+  // A moment to open the receiver's socket; a recording starts at 0 (the
+  // same bytes every time).
+  const double start = recording ? 0.0 : io::net::steady_now_s() + 0.05;
 
   // One datagram (or the CAN frames) for sequence i: the path at time t,
   // stamped with the sender's clock (the steady clock) at sender_time.
@@ -360,6 +371,11 @@ int run(const Args& args) {
   while (!queue.empty()) {
     const Packet p = queue.top();
     queue.pop();
+    if (recording) {  // received when sent: what a loopback without delays delivers
+      recording->write(args.protocol, p.bytes, start + p.send_at_s);
+      ++sent_ok;
+      continue;
+    }
     const double wait = start + p.send_at_s - io::net::steady_now_s();
     if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
     send_packet(p);
@@ -386,7 +402,8 @@ int run(const Args& args) {
   if (!args.quiet) {
     std::printf("ig send: %d poses as %s to %s: %llu %s sent (%llu refused), %llu lost, %llu duplicated, "
                 "%llu reordered, %llu corrupted\n",
-                count, format.c_str(), args.can ? args.can->c_str() : args.to.c_str(), (unsigned long long)sent_ok,
+                count, format.c_str(), args.can ? args.can->c_str() : args.record ? args.record->c_str() : args.to.c_str(),
+                (unsigned long long)sent_ok,
                 args.can ? "frames" : "datagrams",
                 (unsigned long long)send_failed, (unsigned long long)lost, (unsigned long long)duplicated,
                 (unsigned long long)reordered, (unsigned long long)corrupted);

@@ -7,17 +7,33 @@
 // dataset handle; not thread-safe (the tile cache calls it on one thread at
 // a time). Internal to ig_terrain.
 //
-// Voids are filled within the rectangle read (fill_voids over that
-// rectangle alone; a rectangle with no valid sample becomes 0 m), so a
-// paged DEM with voids can differ from its whole-array load near tile
-// edges; void-free DEMs read identically.
+// Voids are filled as the whole-array load fills them, exactly for all but
+// the deepest: a rectangle with voids is read again with a halo around it
+// (kVoidHalo samples, clipped to the DEM), filled (terrain/void_fill.h),
+// then cropped. A void sample whose layer (distance to the nearest valid
+// sample) is at most the halo then gets the whole load's value, bit for bit.
+// When a deeper one is in the rectangle the halo grows to its layer, up to
+// kMaxVoidHalo; the samples still deeper than that may differ from the
+// whole load and are counted (TileVoids::inexact; a window with no valid
+// sample at all becomes 0 m). Void-free rectangles are read once, as is.
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "terrain/gdal_support.h"
 
 namespace ig::terrain {
+
+// The halo a rectangle with voids is read with, and the most it grows to.
+constexpr int kVoidHalo = 32;
+constexpr int kMaxVoidHalo = 256;
+
+// What one read() filled.
+struct TileVoids {
+  std::int64_t filled = 0;   // void samples in the rectangle
+  std::int64_t inexact = 0;  // of those, deeper than the halo used: may differ from the whole load
+};
 
 struct SampleDecoding {
   float nodata = -32768.0f;  // the band's nodata value (the SRTM void marker when it has none)
@@ -32,10 +48,14 @@ class GdalTileReader {
   int width() const { return width_; }
   int height() const { return height_; }
   // Samples [x0, x0 + w) x [y0, y0 + h) (row y0 = south) into out (w * h,
-  // row-major). Returns the void samples filled. Throws std::runtime_error.
-  std::int64_t read(int x0, int y0, int w, int h, float* out);
+  // row-major), voids filled. Throws std::runtime_error.
+  TileVoids read(int x0, int y0, int w, int h, float* out);
 
  private:
+  // The rectangle decoded, rows south first; `state` (1 valid, 0 void) left
+  // empty when every sample is valid. Returns the number of void samples.
+  std::int64_t read_decoded(int x0, int y0, int w, int h, std::vector<float>& buf, std::vector<std::uint8_t>& state);
+
   std::string path_;
   gdal::Dataset ds_;
   GDALRasterBandH band_ = nullptr;

@@ -40,15 +40,19 @@ Heightfield load_paged_heights(const std::string& path, const SampleDecoding& de
 
   float lo = inf, hi = -inf;
   double sum = 0.0;
-  std::int64_t voids = 0;
+  std::int64_t voids = 0, inexact = 0;
   std::vector<float> strip(static_cast<std::size_t>(w) * tile), part;
   for (int y0 = 0; y0 < ht; y0 += tile) {
     const int h = std::min(tile, ht - y0);
-    // Tile by tile, exactly as the cache will read them (voids are filled per tile).
+    // Tile by tile, exactly as the cache will read them, so the statistics,
+    // overview and pyramid are those of the samples the tiles serve (voids
+    // are filled per tile, from a halo around it: gdal_tile_reader.h).
     for (int x0 = 0; x0 < w; x0 += tile) {
       const int tw = std::min(tile, w - x0);
       part.resize(static_cast<std::size_t>(tw) * h);
-      voids += reader->read(x0, y0, tw, h, part.data());
+      const TileVoids v = reader->read(x0, y0, tw, h, part.data());
+      voids += v.filled;
+      inexact += v.inexact;
       for (int r = 0; r < h; ++r)
         std::copy_n(part.data() + std::size_t(r) * tw, tw, strip.data() + std::size_t(r) * w + x0);
     }
@@ -104,6 +108,7 @@ Heightfield load_paged_heights(const std::string& path, const SampleDecoding& de
   paged->cache = cache;
   paged->overview = overview;
   paged->overview_step = step;
+  paged->inexact_voids = inexact;
   paged->pyramid = std::make_shared<const HeightPyramid>(HeightPyramid::from_level2(w, ht, cache, level2, {lo, hi}));
   hf.paged = paged;
   return hf;

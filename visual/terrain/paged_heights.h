@@ -6,6 +6,7 @@
 // height texture and Level0's grid) and the compact min/max pyramid (ray
 // casts, host queries, culling bounds). No GL.
 
+#include <cstdint>
 #include <memory>
 
 #include "terrain/height_pyramid.h"
@@ -19,6 +20,10 @@ struct PagedHeights {
   std::shared_ptr<const Heightfield> overview;
   int overview_step = 1;
   std::shared_ptr<const HeightPyramid> pyramid;
+  // Void samples filled from a bounded neighbourhood that may differ from
+  // the whole-array load's fill: farther than kMaxVoidHalo samples from any
+  // valid sample (terrain/gdal_tile_reader.h). 0 for most DEMs.
+  std::int64_t inexact_voids = 0;
   // What the source needs while tiles are read (a folder's in-memory mosaic
   // VRTs, terrain/dem_mosaic.h); empty for a file.
   std::shared_ptr<const void> source_keep_alive;

@@ -4,15 +4,16 @@
 
 namespace ig::terrain {
 
-// Fills void samples (valid[k] == 0) inward from the edges of each void,
-// one layer at a time: every void sample with at least one valid 8-neighbour
-// takes the mean of those neighbours, then they all count as valid for the
-// next layer. Deterministic and O(samples). Returns the number filled.
-std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state, int w,
-                        int ht) {
+std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state, int w, int ht,
+                        std::vector<std::int32_t>* layers) {
   // state: 0 void, 1 valid, 2 void already queued.
   std::int64_t voids = 0;
   for (std::uint8_t s : state) voids += (s == 0);
+  if (layers) {
+    layers->assign(state.size(), 0);
+    for (std::size_t k = 0; k < state.size(); ++k)
+      if (state[k] == 0) (*layers)[k] = kUnfilledLayer;
+  }
   if (voids == 0) return 0;
 
   auto for_neighbours = [&](std::uint32_t k, auto&& fn) {
@@ -39,7 +40,7 @@ std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state,
     }
   }
   std::vector<float> values;
-  while (!frontier.empty()) {
+  for (std::int32_t layer = 1; !frontier.empty(); ++layer) {
     values.resize(frontier.size());
     for (std::size_t f = 0; f < frontier.size(); ++f) {
       double sum = 0.0;
@@ -56,6 +57,7 @@ std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state,
     for (std::size_t f = 0; f < frontier.size(); ++f) {
       h[frontier[f]] = values[f];
       state[frontier[f]] = 1;
+      if (layers) (*layers)[frontier[f]] = layer;
     }
     for (std::uint32_t k : frontier)
       for_neighbours(k, [&](std::uint32_t n) {

@@ -3,6 +3,7 @@
 // tile reader (docs/terrain-data.md "Nodata").
 
 #include <cstdint>
+#include <climits>
 #include <vector>
 
 namespace ig::terrain {
@@ -13,6 +14,17 @@ namespace ig::terrain {
 // then they all count as valid for the next layer. Deterministic and
 // O(samples). Returns the number of void samples (a void with no valid
 // sample in the grid stays unfilled).
-std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state, int w, int ht);
+//
+// A sample's layer is its distance in 8-neighbour steps (Chebyshev
+// distance) to the nearest valid sample: 0 for valid samples, d for those
+// filled in the d-th pass. A layer-d sample depends only on the samples
+// within d steps of it, so filling any rectangle that holds its nearest
+// valid sample plus d steps around it gives the same value as filling the
+// whole grid (the paged reader's halo, terrain/gdal_tile_reader.h). With
+// `layers`, it is resized to w * ht and gets each sample's layer
+// (kUnfilledLayer for those left unfilled).
+constexpr std::int32_t kUnfilledLayer = INT32_MAX;
+std::int64_t fill_voids(std::vector<float>& h, std::vector<std::uint8_t>& state, int w, int ht,
+                        std::vector<std::int32_t>* layers = nullptr);
 
 }  // namespace ig::terrain

@@ -13,7 +13,7 @@
 #include "io/wire/cigi_queries.h"
 #include "io/wire/native_query.h"
 #include "session/scene_setup.h"
-#include "terrain/georef.h"
+#include "terrain/test/ramp_terrain.h"
 
 namespace {
 
@@ -21,20 +21,8 @@ using namespace ig::io::wire;
 using ig::app::HostServices;
 using ig::app::HostServicesOptions;
 
-ig::terrain::Heightfield make_terrain() {
-  ig::terrain::Heightfield hf;
-  hf.width = hf.height = 65;
-  hf.spacing_x_m = hf.spacing_y_m = 30.0;
-  hf.heights.resize(std::size_t(hf.width) * hf.height);
-  for (int j = 0; j < hf.height; ++j)
-    for (int i = 0; i < hf.width; ++i) hf.ref(i, j) = float(100.0 + 3.0 * i + 0.5 * ((i * 7 + j * 13) % 11));
-  hf.finalize_stats();
-  hf.georef = ig::terrain::make_geographic_georef(37.0, -118.0, 30.0, 30.0);
-  return hf;
-}
-
 struct Fixture {
-  ig::terrain::Heightfield hf = make_terrain();
+  ig::terrain::Heightfield hf = ig::terrain::test::make_ramp_terrain();
   HostServices services;
   explicit Fixture(HostServicesOptions o = {})
       : services(hf, 0.0, ig::session::geodetic_placer(hf), ig::session::local_to_geodetic(hf), o) {}

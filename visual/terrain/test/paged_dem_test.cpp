@@ -2,10 +2,7 @@
 // made at test time, loaded whole and with a 1 MB budget (paged in 64^2
 // tiles), gives the same samples, statistics, overview, pyramid, ray casts
 // and host queries.
-#include <cpl_conv.h>
-#include <gdal.h>
 #include <gtest/gtest.h>
-#include <ogr_srs_api.h>
 
 #include <cmath>
 #include <filesystem>
@@ -18,6 +15,7 @@
 #include "terrain/paged_heights.h"
 #include "terrain/ray_cast.h"
 #include "terrain/terrain_query.h"
+#include "terrain/test/test_geotiff.h"
 
 namespace ig::terrain {
 namespace {
@@ -25,24 +23,10 @@ namespace {
 namespace fs = std::filesystem;
 constexpr int kSide = 1025;
 
-// Rough relief with isolated voids whose neighbourhoods lie inside one
-// 64^2 tile (so the per-tile fill equals the whole-array fill).
+// Rough relief with three isolated voids (voids across tile edges and deep
+// ones: paged_voids_test.cpp).
 std::string write_dem(const fs::path& dir, int w = kSide, int h = kSide) {
-  GDALAllRegister();
   const std::string path = (dir / ("paged_" + std::to_string(w) + "x" + std::to_string(h) + ".tif")).string();
-  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), w, h, 1, GDT_Float32, nullptr);
-  EXPECT_NE(ds, nullptr);
-  double gt[6] = {-119.0, 1.0 / 1200, 0.0, 37.5, 0.0, -1.0 / 1200};
-  GDALSetGeoTransform(ds, gt);
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRImportFromEPSG(srs, 4326);
-  char* wkt = nullptr;
-  OSRExportToWkt(srs, &wkt);
-  GDALSetProjection(ds, wkt);
-  CPLFree(wkt);
-  OSRDestroySpatialReference(srs);
-  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
-  GDALSetRasterNoDataValue(band, -9999.0);
   std::vector<float> v(std::size_t(w) * h);
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> noise(-15.f, 15.f);
@@ -52,8 +36,7 @@ std::string write_dem(const fs::path& dir, int w = kSide, int h = kSide) {
           float(1200.0 + 900.0 * std::sin(c * 0.011) * std::cos(r * 0.017) + 0.2 * c) + noise(rng);
   for (auto [c, r] : {std::pair{100, 100}, {300, 517}, {700, 900}})
     if (c < w && r < h) v[std::size_t(r) * w + c] = -9999.f;
-  EXPECT_EQ(GDALRasterIO(band, GF_Write, 0, 0, w, h, v.data(), w, h, GDT_Float32, 0, 0), CE_None);
-  GDALClose(ds);
+  test::write_test_geotiff(path, w, h, v, -9999.0);
   return path;
 }
 

@@ -1,0 +1,258 @@
+// Voids filled the same when paged (terrain/gdal_tile_reader.h): GeoTIFFs
+// with nodata voids across tile edges and corners, made at test time,
+// loaded whole and with a 1 MB budget in 64^2 tiles. Voids within
+// kMaxVoidHalo samples of a valid sample fill bit for bit as the whole
+// load fills them; deeper ones are counted (PagedHeights::inexact_voids)
+// and are the only samples that differ; the pyramid built at load bounds
+// the heights the tiles serve either way.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cmath>
+#include <deque>
+#include <filesystem>
+#include <limits>
+#include <vector>
+
+#include "terrain/dem_loader.h"
+#include "terrain/gdal_tile_reader.h"
+#include "terrain/height_pyramid.h"
+#include "terrain/heightfield_overview.h"
+#include "terrain/paged_heights.h"
+#include "terrain/test/test_geotiff.h"
+
+namespace ig::terrain {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr float kNodata = -9999.0f;
+constexpr int kTile = 64;
+
+struct Rect {
+  int x0, y0, x1, y1;  // samples [x0, x1) x [y0, y1), row 0 = south
+};
+
+// w x h relief (row 0 = south) with the rectangles made void.
+std::vector<float> make_heights(int w, int h, const std::vector<Rect>& voids) {
+  std::vector<float> v(std::size_t(w) * h);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      v[std::size_t(j) * w + i] = float(1200.0 + 900.0 * std::sin(i * 0.011) * std::cos(j * 0.017) + 0.2 * i +
+                                        7.0 * std::sin(i * 1.3 + j * 0.7));
+  for (const Rect& r : voids)
+    for (int j = r.y0; j < r.y1; ++j)
+      for (int i = r.x0; i < r.x1; ++i) v[std::size_t(j) * w + i] = kNodata;
+  return v;
+}
+
+std::string write_geotiff(const fs::path& path, int w, int h, const std::vector<float>& south_first) {
+  std::vector<float> file(south_first.size());  // file rows north first
+  for (int r = 0; r < h; ++r)
+    std::copy_n(south_first.begin() + std::ptrdiff_t(h - 1 - r) * w, w, file.begin() + std::ptrdiff_t(r) * w);
+  test::write_test_geotiff(path.string(), w, h, file, kNodata);
+  return path.string();
+}
+
+// Each sample's distance in 8-neighbour steps to the nearest valid sample
+// (0 for valid ones): a breadth-first search written here, not the fill's.
+std::vector<int> void_layers(const std::vector<float>& v, int w, int h) {
+  std::vector<int> layer(v.size(), -1);
+  std::deque<int> queue;
+  for (int k = 0; k < int(v.size()); ++k)
+    if (v[k] != kNodata) {
+      layer[k] = 0;
+      queue.push_back(k);
+    }
+  while (!queue.empty()) {
+    const int k = queue.front();
+    queue.pop_front();
+    const int i = k % w, j = k / w;
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        const int ii = i + di, jj = j + dj;
+        if (ii < 0 || jj < 0 || ii >= w || jj >= h || layer[jj * w + ii] >= 0) continue;
+        layer[jj * w + ii] = layer[k] + 1;
+        queue.push_back(jj * w + ii);
+      }
+  }
+  return layer;
+}
+
+Heightfield load_paged(const std::string& path) {
+  DemLoadOptions o;
+  o.memory_budget_mb = 1;
+  o.page_tile = kTile;
+  Heightfield hf = load_dem(path, o);
+  EXPECT_TRUE(hf.paged);
+  return hf;
+}
+
+// Every stored pyramid node (levels >= 2) bounds the samples the tiles
+// serve under it; levels 0 and 1 are those samples.
+void expect_pyramid_bounds_served(const Heightfield& paged) {
+  const HeightPyramid p(paged);
+  const int w = paged.width, h = paged.height;
+  std::vector<float> served(std::size_t(w) * h);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) served[std::size_t(j) * w + i] = paged.at(i, j);
+  // Exact min/max of level-2 nodes (cells [4i, 4i + 4): samples [4i, 4i + 4]), then up.
+  using MinMax = HeightPyramid::MinMax;
+  std::vector<MinMax> level(std::size_t(p.level_width(2)) * p.level_height(2));
+  for (int nj = 0; nj < p.level_height(2); ++nj)
+    for (int ni = 0; ni < p.level_width(2); ++ni) {
+      MinMax m{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+      for (int j = 4 * nj; j <= std::min(4 * nj + 4, h - 1); ++j)
+        for (int i = 4 * ni; i <= std::min(4 * ni + 4, w - 1); ++i) {
+          m.lo = std::min(m.lo, served[std::size_t(j) * w + i]);
+          m.hi = std::max(m.hi, served[std::size_t(j) * w + i]);
+        }
+      level[std::size_t(nj) * p.level_width(2) + ni] = m;
+    }
+  for (int l = 2; l < p.num_levels(); ++l) {
+    const int lw = p.level_width(l), lh = p.level_height(l);
+    for (int j = 0; j < lh; ++j)
+      for (int i = 0; i < lw; ++i) {
+        const MinMax exact = level[std::size_t(j) * lw + i], got = p.node(l, i, j);
+        ASSERT_LE(got.lo, exact.lo) << "level " << l << " node " << i << "," << j;
+        ASSERT_GE(got.hi, exact.hi) << "level " << l << " node " << i << "," << j;
+      }
+    if (l + 1 == p.num_levels()) break;
+    const int uw = p.level_width(l + 1), uh = p.level_height(l + 1);
+    std::vector<MinMax> up(std::size_t(uw) * uh,
+                           MinMax{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
+    for (int j = 0; j < lh; ++j)
+      for (int i = 0; i < lw; ++i) {
+        MinMax& u = up[std::size_t(j / 2) * uw + i / 2];
+        u.lo = std::min(u.lo, level[std::size_t(j) * lw + i].lo);
+        u.hi = std::max(u.hi, level[std::size_t(j) * lw + i].hi);
+      }
+    level.swap(up);
+  }
+  const auto [lo, hi] = std::minmax_element(served.begin(), served.end());
+  EXPECT_EQ(p.root().lo, *lo);
+  EXPECT_EQ(p.root().hi, *hi);
+  EXPECT_EQ(paged.min_m, *lo);
+  EXPECT_EQ(paged.max_m, *hi);
+}
+
+class PagedVoids : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("ig_paged_voids_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  fs::path dir_;
+};
+
+TEST_F(PagedVoids, VoidsWithinTheHaloFillBitForBitAcrossTileEdges) {
+  const int w = 700, h = 650;  // ragged last tiles in both directions
+  const std::vector<Rect> voids = {
+      {60, 60, 69, 69},      // across a tile corner (64, 64)
+      {120, 10, 136, 300},   // a strip across the x = 128 edge and 4 tile rows
+      {0, 250, 40, 262},     // at the DEM's west edge, across y = 256
+      {300, 300, 330, 330},  // across the corner (320, 320)
+      {500, 180, 650, 330},  // 150^2: layers to 75, deeper than the first halo
+      {690, 600, 700, 650},  // the DEM's north-east corner
+      {256, 0, 257, 650},    // a one-sample line the whole height, on a tile edge
+  };
+  const std::vector<float> v = make_heights(w, h, voids);
+  const std::vector<int> layer = void_layers(v, w, h);
+  int deepest = 0;
+  for (int l : layer) deepest = std::max(deepest, l);
+  ASSERT_GT(deepest, kVoidHalo);      // the halo must grow for the big void
+  ASSERT_LE(deepest, kMaxVoidHalo);   // and can: every sample is exact
+  const std::string path = write_geotiff(dir_ / "voids.tif", w, h, v);
+  const Heightfield whole = load_dem(path);
+  const Heightfield paged = load_paged(path);
+  ASSERT_FALSE(whole.paged);
+  EXPECT_GT(whole.nodata_count, 25000);
+  EXPECT_EQ(paged.nodata_count, whole.nodata_count);
+  EXPECT_EQ(paged.paged->inexact_voids, 0);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) ASSERT_EQ(paged.at(i, j), whole.at(i, j)) << i << "," << j << " layer " << layer[j * w + i];
+  EXPECT_EQ(paged.min_m, whole.min_m);
+  EXPECT_EQ(paged.max_m, whole.max_m);
+  EXPECT_EQ(paged.mean_m, whole.mean_m);
+  EXPECT_EQ(paged.paged->overview->heights, decimate_heightfield(whole, paged.paged->overview_step).heights);
+  const HeightPyramid pw(whole), pp(paged);
+  ASSERT_EQ(pp.num_levels(), pw.num_levels());
+  for (int l = 2; l < pw.num_levels(); ++l)
+    for (int j = 0; j < pw.level_height(l); ++j)
+      for (int i = 0; i < pw.level_width(l); ++i) {
+        ASSERT_EQ(pp.node(l, i, j).lo, pw.node(l, i, j).lo) << l << ":" << i << "," << j;
+        ASSERT_EQ(pp.node(l, i, j).hi, pw.node(l, i, j).hi) << l << ":" << i << "," << j;
+      }
+  expect_pyramid_bounds_served(paged);
+}
+
+TEST_F(PagedVoids, VoidsDeeperThanTheLargestHaloAreCountedAndBounded) {
+  const int w = 1100, h = 900;
+  // 640^2: layers to 320, the middle 128^2 deeper than kMaxVoidHalo; the
+  // middle tiles' windows hold no valid sample at all (0 m there).
+  const std::vector<Rect> voids = {{230, 130, 870, 770}, {60, 60, 69, 69}};
+  const std::vector<float> v = make_heights(w, h, voids);
+  const std::vector<int> layer = void_layers(v, w, h);
+  std::int64_t deep = 0;
+  for (int l : layer) deep += l > kMaxVoidHalo;
+  ASSERT_EQ(deep, 128 * 128);
+  const std::string path = write_geotiff(dir_ / "deep.tif", w, h, v);
+  const Heightfield whole = load_dem(path);
+  const Heightfield paged = load_paged(path);
+  EXPECT_EQ(paged.nodata_count, whole.nodata_count);
+  EXPECT_EQ(paged.paged->inexact_voids, deep);
+  std::int64_t differ = 0;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      if (paged.at(i, j) == whole.at(i, j)) continue;
+      ++differ;
+      ASSERT_GT(layer[j * w + i], kMaxVoidHalo) << i << "," << j << ": a shallower void sample differs";
+    }
+  EXPECT_GT(differ, 0);
+  EXPECT_LE(differ, deep);
+  // Every tile read again after the cache evicted it (270 tiles, 64 fit): the same samples.
+  std::vector<float> first(std::size_t(w) * h);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) first[std::size_t(j) * w + i] = paged.at(i, j);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) ASSERT_EQ(paged.at(i, j), first[std::size_t(j) * w + i]) << i << "," << j;
+  EXPECT_GT(paged.paged->cache->stats().evictions, 0);
+  expect_pyramid_bounds_served(paged);
+}
+
+}  // namespace
+}  // namespace ig::terrain
+
+namespace ig::terrain {
+namespace {
+
+// The real DEMs with voids (docs/terrain-data.md "Nodata"): whole and paged
+// (1 MB budget, 64^2 tiles) give the same samples.
+TEST(PagedVoidsRealDems, SameSamplesAsTheWholeLoad) {
+  const char* dir = std::getenv("IG_DEM_DIR");
+  if (!dir) GTEST_SKIP() << "IG_DEM_DIR not set";
+  for (const char* name : {"mt_everest_90m.tif", "mt_rainier_90m.tif", "mt_fuji_90m.tif"}) {
+    const std::string path = std::string(dir) + "/" + name;
+    if (!fs::exists(path)) GTEST_SKIP() << path << " missing";
+    const Heightfield whole = load_dem(path);
+    const Heightfield paged = load_paged(path);
+    EXPECT_GT(whole.nodata_count, 0) << name;
+    EXPECT_EQ(paged.nodata_count, whole.nodata_count) << name;
+    EXPECT_EQ(paged.paged->inexact_voids, 0) << name;
+    std::int64_t differ = 0;
+    for (int j = 0; j < whole.height; ++j)
+      for (int i = 0; i < whole.width; ++i) differ += paged.at(i, j) != whole.at(i, j);
+    EXPECT_EQ(differ, 0) << name;
+    EXPECT_EQ(paged.min_m, whole.min_m) << name;
+    EXPECT_EQ(paged.max_m, whole.max_m) << name;
+    EXPECT_EQ(paged.mean_m, whole.mean_m) << name;
+  }
+}
+
+}  // namespace
+}  // namespace ig::terrain
