@@ -25,3 +25,12 @@ function(sum_frames_column csv column skip var)
   endforeach()
   set(${var} ${sum} PARENT_SCOPE)
 endfunction()
+
+# Stops the test unless the header of `csv` matches `regex` (the columns a
+# kind of run must log); `what` says which run.
+function(expect_frames_columns csv regex what)
+  file(STRINGS "${csv}" header LIMIT_COUNT 1)
+  if(NOT header MATCHES "${regex}")
+    message(FATAL_ERROR "frames.csv of ${what} lacks the columns ${regex}: ${header}")
+  endif()
+endfunction()

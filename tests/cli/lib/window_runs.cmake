@@ -20,3 +20,15 @@ function(run_window_scenario name terrain render keys)
     message(FATAL_ERROR "ig run ${name}: exit ${rc}\n${out}\n${err}")
   endif()
 endfunction()
+
+# `ig run --method roam` on OUT/<name>.json must fail with a message
+# matching `regex` (a method that cannot draw the scene is refused, saying
+# why); `what` names the case in the failure.
+function(expect_roam_refused name regex what)
+  execute_process(COMMAND "${IG}" run "${OUT}/${name}.json" --out "${OUT}/run_roam" --headless --quiet --method roam
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("ig run --method roam (${what}): exit ${rc}: ${err}")
+  if(rc EQUAL 0 OR NOT err MATCHES "${regex}")
+    message(FATAL_ERROR "roam ${what} must be refused naming the method and why")
+  endif()
+endfunction()
