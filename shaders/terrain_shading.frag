@@ -17,7 +17,7 @@ uniform ivec2 u_imagery_window_origin;  // its south-west pixel
 uniform ivec2 u_imagery_window_size;    // (0, 0): no imagery window
 uniform ivec2 u_imagery_full_size;      // pixels of the full-resolution image over the footprint
 uniform float u_imagery_overview_lod;   // log2 of full-resolution pixels per overview pixel
-uniform vec2 u_imagery_overview_scale;  // footprint / overview span (whole steps: <= 1)
+uniform vec2 u_imagery_overview_scale;  // footprint / overview span (whole steps: <= 1; 1 for imagery that fits)
 uniform ivec2 u_dem_size;
 uniform vec2 u_spacing;
 uniform vec2 u_height_range;    // DEM min, max (m)
@@ -62,7 +62,7 @@ vec3 imagery_at(vec2 s) {
     vec2 to_overview = u_imagery_overview_scale / vec2(u_imagery_full_size);
     return textureGrad(u_imagery, uv * u_imagery_overview_scale, px * to_overview, py * to_overview).rgb;
   }
-  return texture(u_imagery, uv).rgb;
+  return texture(u_imagery, uv * u_imagery_overview_scale).rgb;  // scale 1 for imagery that fits
 }
 
 vec3 ramp(float h01, float slope) {

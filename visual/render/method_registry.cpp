@@ -40,13 +40,9 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, const Terrai
                                 "x" + std::to_string(hf.height) + "): its heights are paged (over "
                                 "terrain.memory_budget_mb) and the method needs them whole; use the twolevel method");
   }
-  if (scene.imagery_window() && name != "twolevel") {  // issue 16: imagery beyond one texture
-    const glm::ivec2 f = scene.imagery_window()->full_size();
-    throw std::invalid_argument("method '" + name + "' cannot drape the imagery (" + std::to_string(f.x) + "x" +
-                                std::to_string(f.y) + " over the DEM): it exceeds the GL texture limit " +
-                                std::to_string(scene.texture_limit()) + " and only the twolevel method reads its "
-                                "full-resolution window; use the twolevel method");
-  }
+  // Imagery beyond one texture: the other methods drape its overview (the
+  // scene's imagery texture, up to the texture limit); only the two-level
+  // method keeps a full-resolution imagery window on its Level1.
   if (name == "reference") return std::make_unique<ReferenceMethod>(scene, shader_dir);
   if (name == "twolevel") {
     TwoLevelOptions o = twolevel;

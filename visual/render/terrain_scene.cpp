@@ -78,6 +78,9 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     imagery_uncovered_ = img.uncovered;
     imagery_overview_step_ = img.full_step;
     imagery_overview_span_ = glm::ivec2(img.width, img.height) * img.full_step;
+    // The overview spans whole blocks, a little more than the footprint
+    // (1 exactly for imagery that fits).
+    imagery_overview_scale_ = glm::vec2(img.full_width(), img.full_height()) / glm::vec2(imagery_overview_span_);
     if (img.paged) {  // finer than one texture: full resolution in a window (one per set)
       imagery_window_side_ = paging.window_side;
       windows_[0].imagery = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height, imagery_window_side_,
@@ -96,14 +99,15 @@ Camera TerrainScene::local_camera(const Camera& world) const {
 }
 
 void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera, int windows) const {
-  const HeightWindowTexture* height_window = windows_[windows].height.get();
-  const ImageryWindowTexture* imagery_window = windows_[windows].imagery.get();
+  const HeightWindowTexture* height_window = windows >= 0 ? windows_[windows].height.get() : nullptr;
+  const ImageryWindowTexture* imagery_window = windows >= 0 ? windows_[windows].imagery.get() : nullptr;
   glBindTextureUnit(0, height_tex_.id());
   p.set("u_height", 0);
   p.set("u_has_imagery", has_imagery() ? 1 : 0);
   if (has_imagery()) {
     glBindTextureUnit(1, imagery_tex_.id());
     p.set("u_imagery", 1);
+    p.set("u_imagery_overview_scale", imagery_overview_scale_);
   }
   // The height window on unit 5 (units 2-4 are the two-level method's).
   const bool windowed = height_window && height_window->placed();
@@ -122,7 +126,6 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
     p.set("u_imagery_full_size", imagery_window->full_size());
     p.set("u_imagery_overview_lod", std::log2(float(imagery_overview_step_)));
     // The overview spans whole blocks: a little more than the footprint.
-    p.set("u_imagery_overview_scale", glm::vec2(imagery_window->full_size()) / glm::vec2(imagery_overview_span_));
   }
   p.set("u_imagery_window_origin", imagery_windowed ? imagery_window->origin() : glm::ivec2(0));
   p.set("u_imagery_window_size", imagery_windowed ? imagery_window->size() : glm::ivec2(0));

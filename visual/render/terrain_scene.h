@@ -159,8 +159,9 @@ class TerrainScene {
 
   // Binds the textures and sets the uniforms every terrain program shares
   // (see shaders/terrain.frag and terrain_grid.vert), u_earth_radius_m from
-  // the (local) camera; the windows of set `windows` (claim_windows()).
-  void bind_common(const gl::ShaderProgram& program, const Camera& camera, int windows = 0) const;
+  // the (local) camera; the windows of set `windows` (claim_windows()), or
+  // none (-1, methods that keep no window: whole heights, imagery overview).
+  void bind_common(const gl::ShaderProgram& program, const Camera& camera, int windows = -1) const;
 
  private:
   const terrain::Heightfield& heightfield_;
@@ -177,6 +178,7 @@ class TerrainScene {
   // pixels it spans (whole steps, so at least the full size).
   int imagery_overview_step_ = 1;
   glm::ivec2 imagery_overview_span_{0};
+  glm::vec2 imagery_overview_scale_{1.0f};  // footprint / overview span (u_imagery_overview_scale)
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   struct Windows {
     std::unique_ptr<HeightWindowTexture> height;    // see enable_height_window()
