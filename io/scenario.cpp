@@ -259,7 +259,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   const std::string path = "terrain";
   require_object(j, path);
   check_keys(j, path, {"file", "encoding", "scale", "offset", "spacing_m", "generator", "height_window", "texture_limit",
-                     "memory_budget_mb", "imagery_budget_mb", "wait_for_pages"});
+                     "memory_budget_mb", "imagery_budget_mb", "wait_for_pages", "vertical_datum"});
   const bool has_file = j.contains("file");
   const bool has_gen = j.contains("generator");
   if (has_file && has_gen) fail(path, "exactly one of \"file\" or \"generator\" may be given, not both");
@@ -270,6 +270,8 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
     t.height_window = static_cast<int>(get_integer(j["height_window"], child(path, "height_window"), 0, 16384));
   if (j.contains("texture_limit"))
     t.texture_limit = static_cast<int>(get_integer(j["texture_limit"], child(path, "texture_limit"), 0, 1 << 20));
+  if (j.contains("vertical_datum"))
+    t.vertical_datum = get_choice(j["vertical_datum"], child(path, "vertical_datum"), {"geoid", "ellipsoid"});
   if (j.contains("wait_for_pages")) t.wait_for_pages = get_bool(j["wait_for_pages"], child(path, "wait_for_pages"));
   if (j.contains("memory_budget_mb"))
     t.memory_budget_mb =
@@ -278,7 +280,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
     t.imagery_budget_mb =
         static_cast<int>(get_integer(j["imagery_budget_mb"], child(path, "imagery_budget_mb"), 1, 1 << 20));
   if (has_gen) {
-    for (const char* k : {"encoding", "scale", "offset", "spacing_m"}) {
+    for (const char* k : {"encoding", "scale", "offset", "spacing_m", "vertical_datum"}) {
       if (j.contains(k)) {
         fail(child(path, k), "only allowed with terrain.file (generator settings go in terrain.generator)");
       }

@@ -28,6 +28,11 @@ struct DemLoadOptions {
   // (terrain/paged_heights.h, docs/terrain-data.md "Paged heights").
   int memory_budget_mb = 2048;
   int page_tile = 256;
+  // What the file's heights are above (terrain.vertical_datum): "geoid"
+  // (EGM96, i.e. about mean sea level, as SRTM: used as stored) or
+  // "ellipsoid" (WGS 84: converted to above the geoid at load,
+  // terrain/geoid_correction.h).
+  std::string vertical_datum = "geoid";
 };
 
 // The fractal terrain generator (terrain.generator).

@@ -10,6 +10,8 @@ packages=(
   libglfw3-dev libglm-dev libepoxy-dev libegl-dev libopenimageio-dev libgdal-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev zlib1g-dev
   libcli11-dev libgeographiclib-dev
+  # the EGM96 geoid grid (terrain.vertical_datum "ellipsoid"; also pulled in by GDAL's PROJ)
+  proj-data
   # headless OpenGL (Mesa llvmpipe through EGL) and the windowed path under Xvfb
   libegl-mesa0 libgl1-mesa-dri xvfb xauth
   # frame-time plots

@@ -212,6 +212,15 @@ TEST(Scenario, Defaults) {
   EXPECT_EQ(parse_scenario(doc(R"("render": {"width": 800.0})")).render.width, 800);
 }
 
+TEST(Scenario, TerrainDatumAndPaging) {
+  const Scenario d = parse_scenario(doc("", R"({"file": "x.tif"})"));
+  EXPECT_EQ(d.terrain.vertical_datum, "geoid");
+  EXPECT_FALSE(d.terrain.wait_for_pages);
+  const Scenario s = parse_scenario(doc("", R"({"file": "x.tif", "vertical_datum": "ellipsoid", "wait_for_pages": true})"));
+  EXPECT_EQ(s.terrain.vertical_datum, "ellipsoid");
+  EXPECT_TRUE(s.terrain.wait_for_pages);
+}
+
 TEST(Scenario, FrameCount) {
   Scenario s;
   s.time_step_s = 0.0166667;
@@ -256,6 +265,10 @@ TEST(Scenario, ErrorsNameTheirKey) {
       {"colour with 2 numbers", doc(R"("render": {"sky_horizon_rgb": [0.1, 0.2]})"), {"render.sky_horizon_rgb", "3 numbers"}},
       {"zero sun", doc(R"("render": {"sun_direction": [0, 0, 0]})"), {"render.sun_direction", "non-zero"}},
       {"vsync not bool", doc(R"("render": {"vsync": 1})"), {"render.vsync", "true or false"}},
+      {"unknown vertical datum", doc("", R"({"file": "x.tif", "vertical_datum": "navd88"})"), {"terrain.vertical_datum", "navd88"}},
+      {"vertical datum with a generator", doc("", R"({"generator": {}, "vertical_datum": "ellipsoid"})"),
+       {"terrain.vertical_datum", "only allowed with terrain.file"}},
+      {"wait_for_pages not bool", doc("", R"({"file": "x.tif", "wait_for_pages": 1})"), {"terrain.wait_for_pages", "true or false"}},
       {"keys not increasing", doc("", R"({"generator": {}})", R"({"keys": [{"t": 0, "position": [0,0,0]}, {"t": 2, "position": [0,0,0]}, {"t": 2, "position": [1,0,0]}]})"),
        {"path.keys[2].t", "strictly increasing"}},
       {"keys decreasing", doc("", R"({"generator": {}})", R"({"keys": [{"t": 3, "position": [0,0,0]}, {"t": 1, "position": [0,0,0]}]})"),

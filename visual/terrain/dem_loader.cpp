@@ -170,6 +170,7 @@ void read_whole_heights(Heightfield& hf, GDALRasterBandH band, const std::string
     for (std::size_t k = 0; k < n; ++k)
       if (state.empty() || state[k]) hf.heights[k] = float((hf.heights[k] * dec.scale + dec.offset) * dec.unit_m);
   }
+  if (dec.geoid) dec.geoid->to_orthometric(0, 0, w, ht, hf.heights.data(), state.empty() ? nullptr : state.data());
   hf.nodata_count = state.empty() ? 0 : fill_voids(hf.heights, state, w, ht);
 }
 
@@ -221,6 +222,26 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
   if (!has_scale) dec.scale = 1.0;
   if (!has_offset) dec.offset = 0.0;
   dec.unit_m = vertical_unit_to_metres(GDALGetRasterUnitType(band));
+  if (opts.vertical_datum == "ellipsoid") {  // heights above WGS 84: to above the geoid (EGM96)
+    std::array<double, 6> gt{};
+    OGRSpatialReferenceH srs = GDALGetSpatialRef(h);
+    if (GDALGetGeoTransform(h, gt.data()) != CE_None || !srs)
+      throw DemError(path, "vertical_datum \"ellipsoid\" needs a georeferenced DEM (the geoid depends on where it is)");
+    char* wkt = nullptr;
+    OSRExportToWkt(srs, &wkt);
+    const std::string crs_wkt = wkt ? wkt : "";
+    CPLFree(wkt);
+    // Our (i, j) (south-up sample centres) to the CRS, as GeoReference::grid_to_crs below.
+    const std::array<double, 6> g{gt[0] + 0.5 * gt[1] + (ht - 0.5) * gt[2], gt[1], -gt[2],
+                                  gt[3] + 0.5 * gt[4] + (ht - 0.5) * gt[5], gt[4], -gt[5]};
+    try {
+      dec.geoid = std::make_shared<const GeoidCorrection>(g, crs_wkt, w, ht);
+    } catch (const std::exception& e) {
+      throw DemError(path, e.what());
+    }
+  } else if (opts.vertical_datum != "geoid") {
+    throw DemError(path, "unknown vertical_datum '" + opts.vertical_datum + "' (expected geoid or ellipsoid)");
+  }
 
   Heightfield hf;
   if (paged) {
@@ -294,6 +315,8 @@ const char* kImageEncodings =
 
 Heightfield load_with_oiio(const std::string& path, const DemLoadOptions& opts,
                            std::string encoding) {
+  if (opts.vertical_datum == "ellipsoid")
+    throw DemError(path, "vertical_datum \"ellipsoid\" needs a georeferenced DEM (read through GDAL), not an image");
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);  // never premultiply RGB by alpha
   auto in = OIIO::ImageInput::open(path, &config);

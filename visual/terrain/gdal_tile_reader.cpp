@@ -47,6 +47,7 @@ std::int64_t GdalTileReader::read_decoded(int x0, int y0, int w, int h, std::vec
   if (dec_.scale != 1.0 || dec_.offset != 0.0 || dec_.unit_m != 1.0)
     for (std::size_t k = 0; k < n; ++k)
       if (state.empty() || state[k]) buf[k] = float((buf[k] * dec_.scale + dec_.offset) * dec_.unit_m);
+  if (dec_.geoid) dec_.geoid->to_orthometric(x0, y0, w, h, buf.data(), state.empty() ? nullptr : state.data());
   return std::int64_t(n - valid);
 }
 

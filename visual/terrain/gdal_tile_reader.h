@@ -18,10 +18,12 @@
 // sample at all becomes 0 m). Void-free rectangles are read once, as is.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "terrain/gdal_support.h"
+#include "terrain/geoid_correction.h"
 
 namespace ig::terrain {
 
@@ -38,6 +40,9 @@ struct TileVoids {
 struct SampleDecoding {
   float nodata = -32768.0f;  // the band's nodata value (the SRTM void marker when it has none)
   double scale = 1.0, offset = 0.0, unit_m = 1.0;
+  // Ellipsoidal heights: the undulation subtracted from valid samples after
+  // scale and units, before voids are filled (null: heights as stored).
+  std::shared_ptr<const GeoidCorrection> geoid;
   bool valid(float v) const;
 };
 
