@@ -184,7 +184,7 @@ std::vector<std::string> TwoLevelMethod::pass_names() const {
 
 std::vector<std::string> TwoLevelMethod::column_names() const {
   return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit",
-          "level0_hidden_clusters", "level1_hidden_blocks", "level1_held"};
+          "level0_hidden_clusters", "level1_hidden_blocks", "level1_held", "level1_far"};
 }
 
 TwoLevelMethod::SizeMeshes& TwoLevelMethod::meshes_for(int n, int band_w) {
@@ -225,8 +225,19 @@ bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm:
     const double eye_agl =
         options_.eye_guard ? camera.position.z - hf.sample_bilinear(camera.position.x, camera.position.y) : 0.0;
     int n = 0;
-    std::vector<glm::dvec3> hits;
-    if (options_.predict_size && terrain_visible_) {
+    // Level1 is worth its vertices only where Level0's error would show. When
+    // even the largest square around E reaches no terrain nearer than where
+    // Level0's largest error is under kFarLevel0ErrorPx (E far out: a range
+    // beyond a ridge, the horizon), Level1 takes the smallest size and the
+    // size controller waits (before, a far E grew Level1 to its largest,
+    // 10^6 vertices for a few pixels).
+    const double reach = 0.5 * std::sqrt(2.0) * (controller_.ladder().back() - 1) *
+                         std::max(hf.spacing_x_m, hf.spacing_y_m);  // E to the corners of the largest square
+    const double nearest = glm::length(e.point - camera.position) - reach;
+    far_ = nearest > 0.0 && level0_.max_error_m * pixels_per_radian(camera, viewport_.y) < kFarLevel0ErrorPx * nearest;
+    if (far_) {
+      n = controller_.ladder().front();
+    } else if (options_.predict_size && terrain_visible_) {
       // R for every ladder size on a 12 x 9 grid of view rays (about 0.1-0.3 ms).
       constexpr int kRaysX = 12, kRaysY = 9;
       prediction_rays_.clear();
@@ -241,7 +252,10 @@ bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm:
     } else {
       n = controller_.update(ratio);
     }
-    lod::Level1Placement place{n, ec, false};
+    // Far out, the small square goes under the eye instead (over the DEM),
+    // so the eye guard need not grow it to the largest to reach from E.
+    const bool eye_on_dem = eye.x >= 0 && eye.y >= 0 && eye.x <= hf.width - 1 && eye.y <= hf.height - 1;
+    lod::Level1Placement place{n, far_ && eye_on_dem ? glm::ivec2(glm::round(eye)) : ec, false};
     if (options_.eye_guard)
       place = lod::guard_level1_for_eye(place, eye, eye_agl, level0_.max_error_m, controller_.ladder(),
                                         {hf.width, hf.height});
@@ -551,7 +565,8 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
                    {"e_hit", look_at_.hit ? 1.0 : 0.0},
                    {"level0_hidden_clusters", double(level0_hidden_clusters_)},
                    {"level1_hidden_blocks", double(level1_hidden_blocks_)},
-                   {"level1_held", level1_held_ ? 1.0 : 0.0}};
+                   {"level1_held", level1_held_ ? 1.0 : 0.0},
+                   {"level1_far", far_ ? 1.0 : 0.0}};
   return stats;
 }
 

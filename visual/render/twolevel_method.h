@@ -60,6 +60,11 @@ class TwoLevelMethod final : public TerrainMethod {
   bool eye_guarded() const { return eye_guarded_; }  // this frame's Level1 size / centre came from the eye guard
   // Paged heights: this frame's Level1 is last frame's, the new one's heights not being resident yet.
   bool level1_held() const { return level1_held_; }
+  // Level0's largest error, seen from the nearest point the largest Level1
+  // square around E could reach, is under kFarLevel0ErrorPx pixels: Level1
+  // took its smallest size (E far out).
+  bool level1_far() const { return far_; }
+  static constexpr double kFarLevel0ErrorPx = 0.5;
   const terrain::HeightPyramid& pyramid() const { return pyramid_; }
   const lod::Level0Mesh& level0() const { return level0_; }
   // Level0's drawn height at a sample position (the walls use it; so do "as drawn" host answers).
@@ -114,6 +119,7 @@ class TwoLevelMethod final : public TerrainMethod {
   bool eye_guarded_ = false;
   int n_ = 0;  // Level1 vertices a side used this frame (0 before the first)
   bool level1_held_ = false;  // this frame kept last frame's square (paged heights not in yet)
+  bool far_ = false;  // Level0's error at E under kFarLevel0ErrorPx: Level1 at its smallest
   // (eye guard, band width, blocks: lod/level1_selection.h)
   bool terrain_visible_ = false, band_visible_ = false;
   glm::ivec4 band_rect_{0};  // the band's screen rectangle (x0, y0, x1, y1), from update()
