@@ -77,10 +77,10 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     imagery_uncovered_ = img.uncovered;
     imagery_overview_step_ = img.full_step;
-    imagery_overview_span_ = glm::ivec2(img.width, img.height) * img.full_step;
     // The overview spans whole blocks, a little more than the footprint
     // (1 exactly for imagery that fits).
-    imagery_overview_scale_ = glm::vec2(img.full_width(), img.full_height()) / glm::vec2(imagery_overview_span_);
+    const glm::ivec2 overview_span = glm::ivec2(img.width, img.height) * img.full_step;
+    imagery_overview_scale_ = glm::vec2(img.full_width(), img.full_height()) / glm::vec2(overview_span);
     if (img.paged) {  // finer than one texture: full resolution in a window (one per set)
       imagery_window_side_ = paging.window_side;
       windows_[0].imagery = std::make_unique<ImageryWindowTexture>(img, hf.width, hf.height, imagery_window_side_,
@@ -125,7 +125,6 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
     p.set("u_imagery_window", 6);
     p.set("u_imagery_full_size", imagery_window->full_size());
     p.set("u_imagery_overview_lod", std::log2(float(imagery_overview_step_)));
-    // The overview spans whole blocks: a little more than the footprint.
   }
   p.set("u_imagery_window_origin", imagery_windowed ? imagery_window->origin() : glm::ivec2(0));
   p.set("u_imagery_window_size", imagery_windowed ? imagery_window->size() : glm::ivec2(0));

@@ -174,11 +174,11 @@ class TerrainScene {
   gl::Texture imagery_tex_;  // empty without imagery
   double upload_ms_ = 0.0;
   std::int64_t imagery_uncovered_ = 0;
-  // With an imagery window: the overview's step and the full-resolution
-  // pixels it spans (whole steps, so at least the full size).
+  // Imagery beyond the limit: full-resolution pixels per overview pixel, and
+  // the footprint over the overview's span (whole steps, so a little more
+  // than the footprint; 1 for imagery that fits: u_imagery_overview_scale).
   int imagery_overview_step_ = 1;
-  glm::ivec2 imagery_overview_span_{0};
-  glm::vec2 imagery_overview_scale_{1.0f};  // footprint / overview span (u_imagery_overview_scale)
+  glm::vec2 imagery_overview_scale_{1.0f};
   mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   struct Windows {
     std::unique_ptr<HeightWindowTexture> height;    // see enable_height_window()

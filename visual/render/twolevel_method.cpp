@@ -211,10 +211,10 @@ double TwoLevelMethod::read_previous_ratio() {
 bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm::dvec2& eye) {
   const auto& hf = scene_.heightfield();
   // Paged heights (issue 16), live (TerrainScene::wait_for_pages() false):
-  // after the first frame nothing here waits on a
-  // tile. A read of one that is not resident queues it and throws; so does
-  // a square whose heights (square, band, height window) are not all in.
-  // Either way Level1 keeps last frame's square until they are.
+  // after the first frame nothing here waits on a tile. A read of one that
+  // is not resident queues it and throws; a square whose heights (square,
+  // band, height window) are not all in is refused. Either way Level1 keeps
+  // last frame's square until they are.
   std::optional<terrain::HeightTileCache::NoWait> no_wait;
   if (hf.paged && n_ > 0 && !scene_.wait_for_pages()) no_wait.emplace();
   try {
@@ -234,8 +234,8 @@ bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm:
     const double reach = 0.5 * std::sqrt(2.0) * (controller_.ladder().back() - 1) *
                          std::max(hf.spacing_x_m, hf.spacing_y_m);  // E to the corners of the largest square
     const double nearest = glm::length(e.point - camera.position) - reach;
-    far_ = nearest > 0.0 && level0_.max_error_m * pixels_per_radian(camera, viewport_.y) < kFarLevel0ErrorPx * nearest;
-    if (far_) {
+    const bool far = nearest > 0.0 && level0_.max_error_m * pixels_per_radian(camera, viewport_.y) < kFarLevel0ErrorPx * nearest;
+    if (far) {
       n = controller_.ladder().front();
     } else if (options_.predict_size && terrain_visible_) {
       // R for every ladder size on a 12 x 9 grid of view rays (about 0.1-0.3 ms).
@@ -255,7 +255,7 @@ bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm:
     // Far out, the small square goes under the eye instead (over the DEM),
     // so the eye guard need not grow it to the largest to reach from E.
     const bool eye_on_dem = eye.x >= 0 && eye.y >= 0 && eye.x <= hf.width - 1 && eye.y <= hf.height - 1;
-    lod::Level1Placement place{n, far_ && eye_on_dem ? glm::ivec2(glm::round(eye)) : ec, false};
+    lod::Level1Placement place{n, far && eye_on_dem ? glm::ivec2(glm::round(eye)) : ec, false};
     if (options_.eye_guard)
       place = lod::guard_level1_for_eye(place, eye, eye_agl, level0_.max_error_m, controller_.ladder(),
                                         {hf.width, hf.height});
@@ -267,6 +267,7 @@ bool TwoLevelMethod::place_level1(const Camera& camera, double ratio, const glm:
       if (!scene_.samples_resident(lo, hi) || !scene_.window_ready(windows_, origin + (place.n - 1) / 2)) return false;
     }
     look_at_ = e;
+    far_ = far;
     eye_guarded_ = place.eye_guarded;
     n_ = place.n;
     origin_ = origin;

@@ -82,7 +82,7 @@ class TwoLevelMethod final : public TerrainMethod {
   void upload_beta_template(int n, int band_w);
   void update_walls(SizeMeshes& meshes, int n);
   double read_previous_ratio();
-  // Sets look_at_, n_, origin_, eye_guarded_ for this frame; false when
+  // Sets look_at_, far_, n_, origin_, eye_guarded_ for this frame; false when
   // Level1 keeps last frame's square because paged heights it needs are not
   // resident yet (see the .cpp).
   bool place_level1(const Camera& camera, double ratio, const glm::dvec2& eye);

@@ -27,7 +27,7 @@ TEST(Level1Far, AFarLookAtPointGetsTheSmallestSquare) {
   const double s = world.hf.spacing_x_m;
   // High over one corner, looking across the map at a low angle: E ~20 km out.
   const auto far_view = lod_views::camera_at(world.hf, 10 * s, 10 * s, 3000.0, 45.0, -8.0);
-  const auto far_frame = lod_views::render(world, method, far_view);
+  lod_views::render(world, method, far_view);
   const double distance = glm::length(method.look_at().point - far_view.position);
   const double reach = 0.5 * std::sqrt(2.0) * 64 * s;
   const double error_px = method.level0().max_error_m * ig::render::pixels_per_radian(far_view, lod_views::kH) /
@@ -40,7 +40,6 @@ TEST(Level1Far, AFarLookAtPointGetsTheSmallestSquare) {
   const glm::ivec2 o = method.level1_origin();
   EXPECT_LE(o.x, 10);  // the square holds the eye's sample (10, 10), not E's
   EXPECT_LE(o.y, 10);
-  EXPECT_GT(far_frame.stats.columns.size(), 0u);
 
   // Looking down near the eye: the rule does not apply, the controller sizes Level1.
   const auto near_view = lod_views::camera_at(world.hf, 250 * s, 250 * s, 150.0, 45.0, -30.0);
