@@ -10,14 +10,16 @@ packages=(
   libglfw3-dev libglm-dev libepoxy-dev libegl-dev libopenimageio-dev libgdal-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev zlib1g-dev
   libcli11-dev libgeographiclib-dev
+  # the sun's position from date, time and place (ERFA: the IAU SOFA routines)
+  liberfa-dev
   # the EGM96 geoid grid (terrain.vertical_datum "ellipsoid"; also pulled in by GDAL's PROJ)
   proj-data
   # headless OpenGL (Mesa llvmpipe through EGL) and the windowed path under Xvfb
   libegl-mesa0 libgl1-mesa-dri xvfb xauth
   # frame-time plots
   gnuplot-nox
-  # test helpers
-  python3
+  # test helpers (gdal_fillnodata.py: GDAL's own void fill, the reference for ours)
+  python3 gdal-bin python3-gdal
   # fuzzing
   clang libclang-rt-14-dev
   # Modbus TCP status/control
