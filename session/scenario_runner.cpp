@@ -58,7 +58,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   for (const auto& spec : scenario_.channels) {
     ChannelView v;
     v.spec = spec;
-    v.target = std::make_unique<gl::RenderTarget>(r.width, r.height);
+    v.target = std::make_unique<gl::RenderTarget>(r.width, r.height, GL_RGBA8, r.msaa_samples);
     v.method = render::make_method(r.method, *scene_, options_.shader_dir, r.twolevel);
     v.renderer = std::make_unique<render::FrameRenderer>(*scene_, *v.method, options_.shader_dir);
     channels_.push_back(std::move(v));
@@ -178,6 +178,7 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
       {"lod_ms", ch.last.timings.lod_ms},
       {"terrain_ms", ch.last.timings.terrain_ms},
       {"sky_ms", ch.last.timings.sky_ms},
+      {"resolve_ms", ch.last.timings.resolve_ms},
       {"readback_ms", readback_ms},
       {"present_ms", present_ms},
       {"triangles", m.triangles},

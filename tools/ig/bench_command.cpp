@@ -300,7 +300,7 @@ int run(const Args& args) {
   auto camera_at = [&](int frame) {
     return runner.camera_for(runner.pose_at(frame * s.time_step_s), ref_channel);
   };
-  gl::RenderTarget target(width, height);
+  gl::RenderTarget target(width, height, GL_RGBA8, s.render.msaa_samples);  // as the reference's
   stats::FrameLog frames_csv((out / "frames.csv").string());
   stats::FrameLog samples_csv((out / "samples.csv").string());
   std::vector<BenchRow> rows;

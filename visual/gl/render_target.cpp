@@ -6,10 +6,26 @@
 #include "gl/gl_context.h"
 
 namespace ig::gl {
+namespace {
+void check_complete(GLuint fbo, int width, int height, int samples) {
+  const GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw GlError("framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
+                  (samples > 1 ? " (" + std::to_string(samples) + " samples)" : std::string()) +
+                  " incomplete (status 0x" + std::to_string(status) + ")");
+}
+}  // namespace
 
-RenderTarget::RenderTarget(int width, int height, GLenum color_format)
+int max_samples() {
+  GLint n = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &n);
+  return std::max(1, int(n));
+}
+
+RenderTarget::RenderTarget(int width, int height, GLenum color_format, int samples)
     : width_(width),
       height_(height),
+      samples_(std::clamp(samples, 1, max_samples())),
       fbo_(create_framebuffer()),
       color_(create_texture(GL_TEXTURE_2D)),
       depth_(create_texture(GL_TEXTURE_2D)) {
@@ -21,15 +37,34 @@ RenderTarget::RenderTarget(int width, int height, GLenum color_format)
   }
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-  const GLenum status = glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw GlError("framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
-                  " incomplete (status 0x" + std::to_string(status) + ")");
+  check_complete(fbo_.id(), width, height, 1);
+  if (samples_ > 1) {
+    ms_fbo_ = create_framebuffer();
+    ms_color_ = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
+    ms_depth_ = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
+    // Fixed sample locations: the same pattern in every pixel, so a resolved
+    // edge does not depend on where it falls.
+    glTextureStorage2DMultisample(ms_color_.id(), samples_, color_format, width, height, GL_TRUE);
+    glTextureStorage2DMultisample(ms_depth_.id(), samples_, GL_DEPTH_COMPONENT32F, width, height, GL_TRUE);
+    glNamedFramebufferTexture(ms_fbo_.id(), GL_COLOR_ATTACHMENT0, ms_color_.id(), 0);
+    glNamedFramebufferTexture(ms_fbo_.id(), GL_DEPTH_ATTACHMENT, ms_depth_.id(), 0);
+    check_complete(ms_fbo_.id(), width, height, samples_);
+  }
 }
 
 void RenderTarget::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? ms_fbo_.id() : fbo_.id());
   glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::resolve() const {
+  if (samples_ <= 1) return;
+  // Colour: the samples' mean (a box filter over the pixel); depth cannot be
+  // averaged, GL_NEAREST takes one sample.
+  glBlitNamedFramebuffer(ms_fbo_.id(), fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                         GL_LINEAR);
+  glBlitNamedFramebuffer(ms_fbo_.id(), fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT,
+                         GL_NEAREST);
 }
 
 namespace {

@@ -93,6 +93,12 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   glDepthMask(GL_TRUE);
   glFinish();
   r.timings.sky_ms = ms_since(t0);
+  if (target.samples() > 1) {
+    t0 = Clock::now();
+    target.resolve();
+    glFinish();
+    r.timings.resolve_ms = ms_since(t0);
+  }
   r.passes = recorder_.read();
   r.total.name = "total";
   for (const auto& p : r.passes) {

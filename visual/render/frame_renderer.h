@@ -1,6 +1,6 @@
 #pragma once
 // One view of one frame: LOD update, the method's terrain passes, then the
-// sky into whatever the terrain left uncovered. Each stage is timed on the
+// sky into whatever the terrain left uncovered, then (multisampled) the resolve. Each stage is timed on the
 // wall clock and closed with glFinish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
 
@@ -18,6 +18,7 @@ struct ViewTimings {
   double lod_ms = 0.0;
   double terrain_ms = 0.0;
   double sky_ms = 0.0;
+  double resolve_ms = 0.0;  // multisampled frames: averaging the samples (0 otherwise)
 };
 
 struct ViewResult {

@@ -130,6 +130,7 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
                               std::vector<std::string>{"terrain_shading.frag", "level0_blend.frag", "level0_clipped.frag"}),
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
+      count_ms_program_(shader_dir, "fullscreen.vert", "coverage_count_ms.frag"),
       pyramid_(scene.height_pyramid()),
       level0_(lod::z_ordered(build_scene_level0(scene,  // on the overview beyond the texture limit
                                                 lod::Level0Options{options_.level0_budget, 0.0, scene.earth_radius_m(),
@@ -505,6 +506,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
                                              camera.position.y - eye_sample.y * spacing.y, camera.position.z));
         program->set("u_alpha", 0.5f);
         program->set("u_level1_box", box);
+        program->set("u_clip_footprint", target.samples() > 1 ? 1 : 0);
         program->set("u_level1_center", centre);
         program->set("u_band", 3);
         program->set("u_band_depth", 4);
@@ -535,13 +537,14 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     glViewport(0, 0, cw, ch);
     glDisable(GL_DEPTH_TEST);
     const gl::ScopedDisable no_culling(GL_CULL_FACE);
-    count_program_.use();
-    glBindTextureUnit(5, target.color_texture());
-    count_program_.set("u_color", 5);
-    count_program_.set("u_step", kStep);
+    const gl::ShaderProgram& count = target.samples() > 1 ? count_ms_program_ : count_program_;
+    count.use();
+    glBindTextureUnit(5, target.drawn_color_texture());
+    count.set("u_color", 5);
+    count.set("u_step", kStep);
     glBindVertexArray(empty_vao_.id());
     for (int k = 0; k < (skipped("count") ? 0 : 2); ++k) {
-      count_program_.set("u_threshold", k == 0 ? 0.75f : 0.25f);
+      count.set("u_threshold", k == 0 ? 0.75f : 0.25f);
       glBeginQuery(GL_SAMPLES_PASSED, queries_[parity_][k].id());
       glDrawArrays(GL_TRIANGLES, 0, 3);
       gl::count_draw();

@@ -90,7 +90,9 @@ class TwoLevelMethod final : public TerrainMethod {
   const TerrainScene& scene_;
   int windows_ = -1;  // the scene's window set this method keeps on its Level1 (TerrainScene::claim_windows)
   TwoLevelOptions options_;
-  gl::ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_, count_program_;
+  gl::ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_;
+  // The coverage count over a single-sampled or a multisampled frame.
+  gl::ShaderProgram count_program_, count_ms_program_;
   const terrain::HeightPyramid& pyramid_;  // the scene's, shared across channels
   glm::ivec2 viewport_{640, 480};
   std::vector<glm::dvec3> prediction_rays_;
