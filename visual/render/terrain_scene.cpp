@@ -6,11 +6,32 @@
 #include <vector>
 
 #include "gl/gl_context.h"
+#include "terrain/detail_noise.h"
 #include "terrain/heightfield_overview.h"
 #include "terrain/imagery_loader.h"
 #include "terrain/paged_heights.h"
 
 namespace ig::render {
+namespace {
+// Ground detail tile sizes (metres a texture repeat): fine grain and clumps,
+// the same at an unrelated size so no repeat shows, broad patches.
+constexpr float kDetailTileM[3] = {32.0f, 87.3f, 2048.0f};
+
+gl::Texture upload_detail_texture() {
+  const terrain::DetailNoise noise = terrain::make_detail_noise();
+  gl::Texture t = gl::create_texture(GL_TEXTURE_2D);
+  const int levels = 1 + int(std::log2(noise.size));
+  glTextureStorage2D(t.id(), levels, GL_RGBA8, noise.size, noise.size);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(t.id(), 0, 0, 0, noise.size, noise.size, GL_RGBA, GL_UNSIGNED_BYTE, noise.rgba.data());
+  glGenerateTextureMipmap(t.id());
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return t;
+}
+}  // namespace
 
 TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& shading,
                            const std::optional<std::string>& imagery_path, int texture_limit,
@@ -51,6 +72,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   glTextureParameteri(height_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(height_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(height_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  if (shading_.ground_detail) detail_tex_ = upload_detail_texture();
   glFinish();  // so upload_ms is the real transfer, not just the enqueue
   upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
@@ -89,6 +111,11 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
       window_imagery_ = std::make_unique<terrain::Imagery>(std::move(img));
     }
   }
+}
+
+void TerrainScene::set_ground_detail(bool on) {
+  shading_.ground_detail = on;
+  if (on && !detail_tex_) detail_tex_ = upload_detail_texture();
 }
 
 Camera TerrainScene::local_camera(const Camera& world) const {
@@ -139,6 +166,23 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   p.set("u_spacing", glm::vec2(float(heightfield_.spacing_x_m), float(heightfield_.spacing_y_m)));
   p.set("u_height_range", glm::vec2(heightfield_.min_m, heightfield_.max_m));
   p.set("u_sun_dir", shading_.sun_direction);
+  // Ground detail on unit 7: the tiles' phase at a whole sample near the eye,
+  // in double (a float product of a large sample index would lose it).
+  const bool detail = shading_.ground_detail && detail_tex_;
+  p.set("u_detail_on", detail ? 1 : 0);
+  if (detail) {
+    glBindTextureUnit(7, detail_tex_.id());
+    p.set("u_detail", 7);
+    const glm::dvec2 spacing(heightfield_.spacing_x_m, heightfield_.spacing_y_m);
+    const glm::dvec2 anchor = glm::floor(glm::dvec2(camera.position) / spacing);
+    p.set("u_detail_anchor", glm::vec2(anchor));
+    static const char* const kTileNames[3] = {"u_detail_tile_m[0]", "u_detail_tile_m[1]", "u_detail_tile_m[2]"};
+    static const char* const kPhaseNames[3] = {"u_detail_phase[0]", "u_detail_phase[1]", "u_detail_phase[2]"};
+    for (int k = 0; k < 3; ++k) {
+      p.set(kTileNames[k], kDetailTileM[k]);
+      p.set(kPhaseNames[k], glm::vec2(terrain::detail_tile_phase(anchor, spacing, kDetailTileM[k])));
+    }
+  }
   p.set("u_fog_color", shading_.sky_horizon);
   // Fog reaches 98 % at the visibility distance: exp(-(k V)^2) = 0.02.
   const double k = shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;

@@ -73,6 +73,8 @@ class TerrainScene {
   const ShadingParams& shading() const { return shading_; }
   // Fog visibility in metres (0 = no fog); used from the next bind_common.
   void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
+  // Ground detail on or off from the next bind_common (its texture made on first use).
+  void set_ground_detail(bool on);
   GLuint height_texture() const { return height_tex_.id(); }
   // DEM samples per height-texture sample: 1 when the texture is the whole
   // DEM, > 1 when it is an overview (the DEM exceeds the texture limit).
@@ -172,6 +174,7 @@ class TerrainScene {
   bool wait_for_pages_ = false;
   std::unique_ptr<terrain::Heightfield> overview_;  // only beyond the texture limit
   gl::Texture imagery_tex_;  // empty without imagery
+  gl::Texture detail_tex_;   // ground detail (terrain/detail_noise.h); empty when shading_.ground_detail is off
   double upload_ms_ = 0.0;
   std::int64_t imagery_uncovered_ = 0;
   // Imagery beyond the limit: full-resolution pixels per overview pixel, and
