@@ -340,7 +340,7 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   check_keys(j, path,
              {"width", "height", "fov_y_deg", "near_m", "far_m", "method", "fog_visibility_m", "sky_zenith_rgb",
               "sky_horizon_rgb", "sun_direction", "imagery", "frame_budget_ms", "vsync", "earth_curvature", "twolevel",
-              "ground_detail", "msaa_samples"});
+              "ground_detail", "antialiasing", "msaa_samples"});
   RenderSpec r;
   if (j.contains("width")) r.width = static_cast<int>(get_integer(j["width"], child(path, "width"), 1, kMaxImageSide));
   if (j.contains("height")) r.height = static_cast<int>(get_integer(j["height"], child(path, "height"), 1, kMaxImageSide));
@@ -378,8 +378,10 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
     r.earth_curvature = get_choice(j["earth_curvature"], child(path, "earth_curvature"), {"auto", "on", "off"});
   if (j.contains("twolevel")) r.twolevel = parse_twolevel(j["twolevel"], child(path, "twolevel"));
   if (j.contains("ground_detail")) r.shading.ground_detail = get_bool(j["ground_detail"], child(path, "ground_detail"));
+  if (j.contains("antialiasing"))
+    r.antialiasing = get_choice(j["antialiasing"], child(path, "antialiasing"), {"msaa", "fxaa", "off"});
   if (j.contains("msaa_samples"))
-    r.msaa_samples = static_cast<int>(get_integer(j["msaa_samples"], child(path, "msaa_samples"), 1, 64));
+    r.msaa_samples = static_cast<int>(get_integer(j["msaa_samples"], child(path, "msaa_samples"), 2, 64));
   return r;
 }
 

@@ -63,8 +63,9 @@ struct RenderSpec {
   // terrain spanning more than 5 km (session::earth_radius_for), "on", "off".
   std::string earth_curvature = "auto";
   options::TwoLevelOptions twolevel;  // render.twolevel
-  // Multisample anti-aliasing of the IG framebuffer: samples per pixel
-  // (1 = off), clamped to what the GL offers (GL_MAX_SAMPLES).
+  // Anti-aliasing of the IG framebuffer: "msaa" (msaa_samples per pixel,
+  // clamped to GL_MAX_SAMPLES), "fxaa" (a post-process edge filter) or "off".
+  std::string antialiasing = "msaa";
   int msaa_samples = 4;
 };
 

@@ -58,12 +58,18 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   for (const auto& spec : scenario_.channels) {
     ChannelView v;
     v.spec = spec;
-    v.target = std::make_unique<gl::RenderTarget>(r.width, r.height, GL_RGBA8, r.msaa_samples);
+    v.target = make_frame_target(r, r.width, r.height);
     v.method = render::make_method(r.method, *scene_, options_.shader_dir, r.twolevel);
     v.renderer = std::make_unique<render::FrameRenderer>(*scene_, *v.method, options_.shader_dir);
     channels_.push_back(std::move(v));
   }
   prefetch_first_window();
+}
+
+std::unique_ptr<gl::RenderTarget> make_frame_target(const io::RenderSpec& r, int width, int height) {
+  const bool msaa = r.antialiasing == "msaa";
+  return std::make_unique<gl::RenderTarget>(width, height, GL_RGBA8, msaa ? r.msaa_samples : 1,
+                                            r.antialiasing == "fxaa");
 }
 
 io::Pose ScenarioRunner::pose_at(double t_s) const { return path_->sample(t_s); }

@@ -60,6 +60,10 @@ struct FrameResult {
   long long imagery_missing = 0, imagery_page_ins = 0, imagery_page_waits = 0;
 };
 
+// A channel's frame target as render.antialiasing asks (multisampled,
+// post-filtered or plain).
+std::unique_ptr<gl::RenderTarget> make_frame_target(const io::RenderSpec& render, int width, int height);
+
 // The frame's work counters as log columns: totals (vs_invocations,
 // fs_invocations, primitives, draw_calls, upload_bytes), then with per_pass
 // <pass>_vs, <pass>_fs, <pass>_prims, <pass>_draws for every pass.

@@ -300,7 +300,8 @@ int run(const Args& args) {
   auto camera_at = [&](int frame) {
     return runner.camera_for(runner.pose_at(frame * s.time_step_s), ref_channel);
   };
-  gl::RenderTarget target(width, height, GL_RGBA8, s.render.msaa_samples);  // as the reference's
+  const auto target_ptr = session::make_frame_target(s.render, width, height);  // as the reference's
+  const gl::RenderTarget& target = *target_ptr;
   stats::FrameLog frames_csv((out / "frames.csv").string());
   stats::FrameLog samples_csv((out / "samples.csv").string());
   std::vector<BenchRow> rows;

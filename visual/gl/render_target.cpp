@@ -22,7 +22,7 @@ int max_samples() {
   return std::max(1, int(n));
 }
 
-RenderTarget::RenderTarget(int width, int height, GLenum color_format, int samples)
+RenderTarget::RenderTarget(int width, int height, GLenum color_format, int samples, bool post_pass)
     : width_(width),
       height_(height),
       samples_(std::clamp(samples, 1, max_samples())),
@@ -39,21 +39,38 @@ RenderTarget::RenderTarget(int width, int height, GLenum color_format, int sampl
   glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   check_complete(fbo_.id(), width, height, 1);
   if (samples_ > 1) {
-    ms_fbo_ = create_framebuffer();
-    ms_color_ = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
-    ms_depth_ = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
+    draw_fbo_ = create_framebuffer();
+    draw_color_ = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
+    draw_depth_ = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
     // Fixed sample locations: the same pattern in every pixel, so a resolved
     // edge does not depend on where it falls.
-    glTextureStorage2DMultisample(ms_color_.id(), samples_, color_format, width, height, GL_TRUE);
-    glTextureStorage2DMultisample(ms_depth_.id(), samples_, GL_DEPTH_COMPONENT32F, width, height, GL_TRUE);
-    glNamedFramebufferTexture(ms_fbo_.id(), GL_COLOR_ATTACHMENT0, ms_color_.id(), 0);
-    glNamedFramebufferTexture(ms_fbo_.id(), GL_DEPTH_ATTACHMENT, ms_depth_.id(), 0);
-    check_complete(ms_fbo_.id(), width, height, samples_);
+    glTextureStorage2DMultisample(draw_color_.id(), samples_, color_format, width, height, GL_TRUE);
+    glTextureStorage2DMultisample(draw_depth_.id(), samples_, GL_DEPTH_COMPONENT32F, width, height, GL_TRUE);
+    glNamedFramebufferTexture(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, draw_color_.id(), 0);
+    glNamedFramebufferTexture(draw_fbo_.id(), GL_DEPTH_ATTACHMENT, draw_depth_.id(), 0);
+    check_complete(draw_fbo_.id(), width, height, samples_);
+  } else if (post_pass) {
+    // The post pass reads the drawn colour with bilinear taps between pixels.
+    draw_fbo_ = create_framebuffer();
+    draw_color_ = create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(draw_color_.id(), 1, color_format, width, height);
+    glTextureParameteri(draw_color_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(draw_color_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(draw_color_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(draw_color_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glNamedFramebufferTexture(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, draw_color_.id(), 0);
+    glNamedFramebufferTexture(draw_fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    check_complete(draw_fbo_.id(), width, height, 1);
   }
 }
 
 void RenderTarget::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? ms_fbo_.id() : fbo_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_ ? draw_fbo_.id() : fbo_.id());
+  glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::bind_output() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width_, height_);
 }
 
@@ -61,9 +78,9 @@ void RenderTarget::resolve() const {
   if (samples_ <= 1) return;
   // Colour: the samples' mean (a box filter over the pixel); depth cannot be
   // averaged, GL_NEAREST takes one sample.
-  glBlitNamedFramebuffer(ms_fbo_.id(), fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+  glBlitNamedFramebuffer(draw_fbo_.id(), fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
                          GL_LINEAR);
-  glBlitNamedFramebuffer(ms_fbo_.id(), fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT,
+  glBlitNamedFramebuffer(draw_fbo_.id(), fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT,
                          GL_NEAREST);
 }
 

@@ -3,10 +3,15 @@
 // float depth (reversed-Z needs the float depth buffer for its precision).
 // Every frame, headless or windowed, is drawn here first.
 //
-// Multisampled (samples > 1): passes draw into multisampled colour and depth
-// (bind()); resolve() averages the colour samples into a single-sampled
-// colour texture and copies one depth sample per pixel, and everything that
-// reads the frame afterwards (capture, present, image error) reads that.
+// Anti-aliased frames draw elsewhere first and leave the picture here:
+// - multisampled (samples > 1): passes draw into multisampled colour and
+//   depth; resolve() averages the colour samples into the single-sampled
+//   colour texture and copies one depth sample per pixel;
+// - post-filtered (post_pass): passes draw into a colour texture of their
+//   own (depth is shared); the caller's full-screen pass reads it
+//   (drawn_color_texture) and writes the picture (bind_output).
+// Everything that reads the frame afterwards (capture, present, image error)
+// reads the picture: fbo(), color_texture(), depth_texture().
 
 #include <epoxy/gl.h>
 
@@ -21,7 +26,8 @@ class RenderTarget {
  public:
   // color_format: GL_RGBA8 for frames; e.g. GL_RGBA16F for data targets.
   // samples: 1 = no multisampling; more is clamped to GL_MAX_SAMPLES.
-  RenderTarget(int width, int height, GLenum color_format = GL_RGBA8, int samples = 1);
+  // post_pass (single-sampled only): a separate texture to draw into.
+  RenderTarget(int width, int height, GLenum color_format = GL_RGBA8, int samples = 1, bool post_pass = false);
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;
 
@@ -30,16 +36,20 @@ class RenderTarget {
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }
+  bool post_pass() const { return bool(draw_fbo_) && samples_ == 1; }
   // Multisampled: the drawn samples averaged into the single-sampled colour
   // texture (depth: one sample per pixel). Nothing to do otherwise.
   void resolve() const;
-  // The single-sampled (resolved) framebuffer and its textures.
+  // Post-filtered: binds the picture's framebuffer (colour only) for the pass
+  // that writes it.
+  void bind_output() const;
+  // The picture: the single-sampled framebuffer and its textures.
   GLuint fbo() const { return fbo_.id(); }
   GLuint color_texture() const { return color_.id(); }
   GLuint depth_texture() const { return depth_.id(); }
-  // What the passes drew, before resolve(): a GL_TEXTURE_2D_MULTISAMPLE
-  // when multisampled, else color_texture().
-  GLuint drawn_color_texture() const { return samples_ > 1 ? ms_color_.id() : color_.id(); }
+  // What the passes drew: a GL_TEXTURE_2D_MULTISAMPLE when multisampled,
+  // their own texture when post-filtered, else color_texture().
+  GLuint drawn_color_texture() const { return draw_color_ ? draw_color_.id() : color_.id(); }
 
   // Read back (after resolve()), top row first (image order). RGBA8 and float depth.
   std::vector<std::uint8_t> read_rgba() const;
@@ -50,8 +60,8 @@ class RenderTarget {
   int samples_ = 1;
   Framebuffer fbo_;
   Texture color_, depth_;
-  Framebuffer ms_fbo_;  // multisampled only
-  Texture ms_color_, ms_depth_;
+  Framebuffer draw_fbo_;  // multisampled or post-filtered only
+  Texture draw_color_, draw_depth_;  // draw_depth_: multisampled only (post-filtered shares depth_)
 };
 
 // The largest sample count the context offers (GL_MAX_SAMPLES).

@@ -10,10 +10,12 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
-// The work counters' passes: the method's, then the sky.
+// The work counters' passes: the method's, then the sky and the
+// anti-aliasing post pass (0 where the frame has none).
 std::vector<std::string> pass_names_of(const TerrainMethod& method) {
   auto names = method.pass_names();
   names.push_back("sky");
+  names.push_back("aa");
   return names;
 }
 }  // namespace
@@ -22,6 +24,7 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
     : scene_(scene),
       method_(&method),
       sky_(shader_dir, "sky.vert", "sky.frag"),
+      edge_aa_(shader_dir, "fullscreen.vert", "edge_aa.frag"),
       recorder_(pass_names_of(method)),
       empty_vao_(gl::create_vertex_array()) {
   method_->set_pass_recorder(&recorder_);
@@ -93,9 +96,22 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   glDepthMask(GL_TRUE);
   glFinish();
   r.timings.sky_ms = ms_since(t0);
-  if (target.samples() > 1) {
+  if (target.samples() > 1 || target.post_pass()) {
     t0 = Clock::now();
-    target.resolve();
+    if (target.post_pass()) {
+      target.bind_output();
+      glDisable(GL_DEPTH_TEST);
+      edge_aa_.use();
+      glBindTextureUnit(0, target.drawn_color_texture());
+      edge_aa_.set("u_frame", 0);
+      recorder_.begin("aa");
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      gl::count_draw();
+      recorder_.end();
+      glEnable(GL_DEPTH_TEST);
+    } else {
+      target.resolve();
+    }
     glFinish();
     r.timings.resolve_ms = ms_since(t0);
   }
@@ -111,6 +127,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   r.total.bytes_uploaded = gl::work_tally().bytes_uploaded - at_start.bytes_uploaded;
   if (!r.method.passes.empty()) r.method.passes += "+";
   r.method.passes += "sky";
+  if (target.post_pass()) r.method.passes += "+aa";
   return r;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // One view of one frame: LOD update, the method's terrain passes, then the
-// sky into whatever the terrain left uncovered, then (multisampled) the resolve. Each stage is timed on the
+// sky into whatever the terrain left uncovered, then the anti-aliasing
+// resolve (multisampled) or post pass (post-filtered). Each stage is timed on the
 // wall clock and closed with glFinish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
 
@@ -18,7 +19,7 @@ struct ViewTimings {
   double lod_ms = 0.0;
   double terrain_ms = 0.0;
   double sky_ms = 0.0;
-  double resolve_ms = 0.0;  // multisampled frames: averaging the samples (0 otherwise)
+  double resolve_ms = 0.0;  // anti-aliasing: averaging the samples, or the edge filter (0 otherwise)
 };
 
 struct ViewResult {
@@ -51,6 +52,7 @@ class FrameRenderer {
   const TerrainScene& scene_;
   TerrainMethod* method_;
   gl::ShaderProgram sky_;
+  gl::ShaderProgram edge_aa_;  // post-filtered targets (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;
   gl::VertexArray empty_vao_;  // the sky's full-screen triangle needs no vertices
   bool wireframe_ = false;

@@ -25,7 +25,7 @@ struct Shot {
 
 struct ShotSpec {
   int w = 320, h = 240;
-  int samples = 1;
+  std::string aa = "off";  // render.antialiasing
   bool detail = true;
   std::string method = "reference";
 };
@@ -38,7 +38,8 @@ inline std::string dem_dir() {
 // Frame `frame` of `scenario` (its path and settings; size, samples, detail
 // and method from `spec`).
 inline Shot render(ig::io::Scenario scenario, int frame, const ShotSpec& spec) {
-  scenario.render.msaa_samples = spec.samples;
+  scenario.render.antialiasing = spec.aa;
+  if (spec.aa == "msaa") scenario.render.msaa_samples = 4;
   scenario.render.shading.ground_detail = spec.detail;
   ig::session::RunOptions o;
   o.width = spec.w;
