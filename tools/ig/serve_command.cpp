@@ -286,7 +286,6 @@ int run(const Args& args) {
     const auto t0 = std::chrono::steady_clock::now();
     // Frozen: the last pose again; the sources are still drained and counted.
     const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
-    if (const std::string w = feed.take_outside_warning(); !w.empty()) std::cerr << "ig serve: " << w << "\n";
     last_pose = pose;
     const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const session::FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
