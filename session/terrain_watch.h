@@ -4,7 +4,7 @@
 // ground draws the terrain's underside. TerrainWatch counts, per frame,
 //  * frames outside the terrain: the pose more than kOffTerrainM outside the
 //    DEM's extent, or no part of the terrain in any channel's view frustum;
-//  * frames below the terrain: the eye under the surface it is above;
+//  * frames below the terrain: the eye lower than the surface beneath it;
 // and says so once for each, naming the first such pose. ig run and
 // ig serve both use it (through RunOutputs), judged outside the LOD methods
 // so every method is counted alike.
