@@ -1,6 +1,7 @@
 #include "io/recording.h"
 
 #include <cstring>
+#include <filesystem>
 
 namespace ig::io {
 namespace {
@@ -31,7 +32,13 @@ void RecordingWriter::write(Protocol protocol, std::span<const std::uint8_t> d, 
 
 std::vector<RecordedDatagram> read_recording(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw RecordingError(path + ": cannot open recording");
+  if (!in) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(path, ec);
+    throw RecordingError(path + (st.type() == std::filesystem::file_type::not_found ? ": no such file"
+                                 : st.type() == std::filesystem::file_type::directory ? ": is a folder, not a recording"
+                                                                                       : ": cannot open recording"));
+  }
   char magic[8] = {};
   in.read(magic, sizeof magic);
   if (in.gcount() != sizeof magic || std::memcmp(magic, kMagic, sizeof magic) != 0)

@@ -623,7 +623,7 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
     if (root.contains("capture")) {
       const json& c = root["capture"];
       require_object(c, "capture");
-      check_keys(c, "capture", {"times_s"});
+      check_keys(c, "capture", {"times_s", "every_s"});
       if (c.contains("times_s")) {
         const json& ts = c["times_s"];
         require_array(ts, "capture.times_s");
@@ -635,6 +635,13 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
           }
           s.capture_times_s.push_back(v);
         }
+      }
+      if (c.contains("every_s")) {
+        const double every = get_positive(c["every_s"], "capture.every_s", kMaxTimeS);
+        if (every < s.time_step_s)
+          fail("capture.every_s", "must be >= time.step_s (" + num(s.time_step_s) +
+                                      "): one capture a frame is the most there can be" + got(c["every_s"]));
+        s.capture_every_s = every;
       }
     }
     if (root.contains("live")) {

@@ -105,6 +105,9 @@ struct Scenario {
   double time_step_s = 1.0 / 60.0;
   double duration_s = 10.0;             // defaults to the last key's time when omitted
   std::vector<double> capture_times_s;  // captured as PNG (nearest frame)
+  // capture.every_s: besides those, a capture every this many seconds of
+  // sim time from 0 (0 = none); session::CaptureSchedule serves both.
+  double capture_every_s = 0.0;
   // Live IG (ig serve): how the pose filter trades latency for smoothness,
   // "smooth", "latest" or "sync" (docs/pose-filter.md, "Latency modes");
   // ig serve --latency and Modbus override it.

@@ -7,14 +7,7 @@ namespace ig::session {
 PoseFeed::PoseFeed(const terrain::Heightfield& hf, const io::PoseFilterOptions& options)
     : filter_(options),
       intake_(filter_, geodetic_placer(hf)),
-      georeferenced_(hf.georef.has_value()),
-      extent_m_(hf.extent_x_m(), hf.extent_y_m()) {}
-
-std::string PoseFeed::take_outside_warning() {
-  if (outside_warning_.empty() || outside_warned_) return "";
-  outside_warned_ = true;
-  return outside_warning_;
-}
+      georeferenced_(hf.georef.has_value()) {}
 
 io::Pose PoseFeed::pose_at(double now_s, const io::Pose& fallback, double display_lead_s) {
   frame_start_s_ = complete_s_ = now_s;
@@ -26,16 +19,6 @@ io::Pose PoseFeed::pose_at(double now_s, const io::Pose& fallback, double displa
   }
   last_age_ms_ = f->age_s * 1000.0;
   shown_time_s_ = f->render_time_s;
-  const glm::dvec2 p(f->position);
-  const glm::dvec2 out_by = glm::max(glm::max(-p, p - extent_m_), glm::dvec2(0.0));
-  if (glm::length(out_by) > 1000.0) {
-    ++frames_outside_;
-    if (outside_warning_.empty())
-      outside_warning_ = "the received ownship is " + std::to_string(int(glm::length(out_by) / 1000.0)) +
-                         " km outside the terrain (local x " + std::to_string(int(p.x)) + " m, y " +
-                         std::to_string(int(p.y)) + " m): only sky is drawn there; check the host's position "
-                         "or the scenario's terrain (and terrain.generator.origin)";
-  }
   last_mode_ = f->mode == io::FilteredPose::Interpolating   ? "interpolating"
                : f->mode == io::FilteredPose::Extrapolating ? "extrapolating"
                                                             : "holding";
@@ -94,8 +77,7 @@ nlohmann::json PoseFeed::summary() const {
             {"rephases", filter_.sender_clock().counters().rephases},
             {"spread", filter_.sender_clock().counters().spread},
             {"pulled_earlier", filter_.sender_clock().counters().pulled_earlier}}},
-          {"georeferenced", georeferenced_},
-          {"frames_outside_terrain", frames_outside_}};
+          {"georeferenced", georeferenced_}};
 }
 
 }  // namespace ig::session

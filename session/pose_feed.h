@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec2.hpp>
 #include <nlohmann/json.hpp>
 
 #include "io/filter/pose_filter.h"
@@ -39,10 +38,6 @@ class PoseFeed {
   nlohmann::json summary() const;
   bool georeferenced() const { return georeferenced_; }
   void set_latency_mode(io::LatencyMode m) { filter_.set_latency_mode(m); }
-  // Once, the first time a received pose lies more than 1 km outside the
-  // terrain: a line saying where (a host flying elsewhere, or the wrong
-  // terrain or origin); "" otherwise.
-  std::string take_outside_warning();
   double pose_age_ms() const { return last_age_ms_; }  // -1: no pose yet
 
  private:
@@ -53,10 +48,6 @@ class PoseFeed {
   std::string last_mode_ = "none";
   double frame_start_s_ = 0.0, complete_s_ = 0.0;
   double shown_time_s_ = 0.0;  // IG-clock instant the pose shows (sender time + offset)
-  glm::dvec2 extent_m_{0.0};    // terrain extent, local metres
-  std::uint64_t frames_outside_ = 0;
-  bool outside_warned_ = false;
-  std::string outside_warning_;
 };
 
 }  // namespace ig::session

@@ -26,7 +26,12 @@ RunOutputs::RunOutputs(const std::filesystem::path& dir, std::string command, bo
       command_(std::move(command)),
       progress_(progress),
       log_((dir / "frames.csv").string()),
-      start_(Clock::now()) {}
+      start_(Clock::now()),
+      watch_(command_, [this](const std::string& line) { warn(line); }) {}
+
+void RunOutputs::warn(const std::string& line) const {
+  std::fprintf(stderr, "%s%s\n", progress_ && rendered_ > 0 ? "\n" : "", line.c_str());
+}
 
 void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool capture, bool last, int total_frames,
                        const std::function<void(std::vector<stats::Cell>&)>& extra) {
@@ -55,6 +60,7 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
     if (extra) extra(row);
     log_.add_row(row);
   }
+  watch_.observe(runner, f);
   ++rendered_;
   if (f.page_waits > 0) ++frames_waited_on_io_;
   page_waits_ += std::max(f.page_waits, 0LL);
@@ -107,6 +113,10 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         {"load_ms", runner.load_ms()}}},
       {"frame_time", stats::frame_time_summary(log_.frame_ms(), r.frame_budget_ms)},
       {"captures", captured_},
+      // Frames that drew sky only (pose over 1 km off the terrain, or no
+      // terrain in any channel's view) and frames whose eye was underground.
+      {"frames_outside_terrain", watch_.frames_outside()},
+      {"frames_below_terrain", watch_.frames_below()},
   };
   if (hf.paged) {  // issue 16: paged heights
     const auto st = hf.paged->cache->stats();
@@ -155,6 +165,8 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         {"failed_tiles", w->failed_tiles()},
     };
   }
+  if (extra.is_object() && extra.contains("pose_intake"))  // where ig serve has always reported it
+    extra["pose_intake"]["frames_outside_terrain"] = watch_.frames_outside();
   for (auto it = extra.begin(); extra.is_object() && it != extra.end(); ++it) summary[it.key()] = it.value();
   std::ofstream((dir_ / "summary.json").string()) << summary.dump(2) << "\n";
   const bool plotted = plot_frame_times(log_.path(), (dir_ / "frametime.png").string(),

@@ -1,7 +1,8 @@
 #pragma once
 // What a run leaves behind, shared by ig run and ig serve: frames.csv (one
 // row per frame and channel), captured PNGs, final.png, summary.json and the
-// frametime.png plot, plus the progress line on a terminal.
+// frametime.png plot, plus the progress line on a terminal and the warnings
+// about frames that show no terrain or look from under it (TerrainWatch).
 
 #include <chrono>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "session/scenario_runner.h"
+#include "session/terrain_watch.h"
 #include "stats/frame_log.h"
 
 namespace ig::session {
@@ -30,6 +32,10 @@ class RunOutputs {
   // prints the closing lines. Returns the process exit code.
   int finish(ScenarioRunner& runner, const std::string& scenario_file, nlohmann::json extra = {});
 
+  // Prints a warning line on stderr (after the progress line, if any).
+  void warn(const std::string& line) const;
+  const TerrainWatch& terrain_watch() const { return watch_; }
+
  private:
   std::filesystem::path dir_;
   std::string command_;
@@ -38,6 +44,7 @@ class RunOutputs {
   std::vector<std::string> captured_;
   int rendered_ = 0;
   std::chrono::steady_clock::time_point start_;
+  TerrainWatch watch_;
   // Paged heights (issue 16): frames that waited on a tile, tiles loaded.
   long long frames_waited_on_io_ = 0, page_waits_ = 0, page_ins_ = 0;
   // Paged imagery: frames whose window move was held, held moves, tiles

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Set up, build, and run the default scenario (generated terrain, headless
-# when there is no display). Outputs: out/default/.
+# when there is no display). Outputs: out/default/. Builds build/bin/ig and
+# build/bin/ig-send (the pose sender the README and docs/live-ig.md use with
+# ig serve).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)" --target ig
+cmake --build build -j"$(nproc)" --target ig ig-send
 build/bin/ig run scenarios/default.json --out out/default "$@"

@@ -200,6 +200,8 @@ TEST(Scenario, Defaults) {
   EXPECT_DOUBLE_EQ(s.time_step_s, 1.0 / 60.0);
   EXPECT_DOUBLE_EQ(s.duration_s, 4.0);  // last key time
   EXPECT_TRUE(s.capture_times_s.empty());
+  EXPECT_EQ(s.capture_every_s, 0.0);
+  EXPECT_EQ(parse_scenario(doc(R"("capture": {"every_s": 1.5})")).capture_every_s, 1.5);
   EXPECT_EQ(s.live_latency, LatencyMode::Smooth);
   EXPECT_EQ(scenario_frame_count(s), 241);
   EXPECT_EQ(parse_scenario(doc(R"("live": {"latency": "latest"})")).live_latency, LatencyMode::Latest);
@@ -310,6 +312,12 @@ TEST(Scenario, ErrorsNameTheirKey) {
       {"too many frames", doc(R"("time": {"step_s": 1e-6, "duration_s": 1e6})"), {"time", "frames"}},
       {"capture after end", doc(R"("capture": {"times_s": [0, 5]})"), {"capture.times_s[1]", "[0, 4]"}},
       {"capture negative", doc(R"("time": {"duration_s": 10}, "capture": {"times_s": [-1]})"), {"capture.times_s[0]"}},
+      {"capture every 0", doc(R"("capture": {"every_s": 0})"), {"capture.every_s", "> 0"}},
+      {"capture every negative", doc(R"("capture": {"every_s": -2})"), {"capture.every_s", "> 0", "-2"}},
+      {"capture every string", doc(R"("capture": {"every_s": "1s"})"), {"capture.every_s", "number", "string"}},
+      {"capture every below the step", doc(R"("time": {"step_s": 0.1}, "capture": {"every_s": 0.05})"),
+       {"capture.every_s", ">= time.step_s (0.1)", "0.05"}},
+      {"capture key", doc(R"("capture": {"every": 1})"), {"capture.every: unknown key", "every_s"}},
       {"no channels", doc(R"("channels": [])"), {"channels", "at least one"}},
       {"latency mode", doc(R"("live": {"latency": "fast"})"), {"live.latency", "smooth", "fast"}},
       {"live key", doc(R"("live": {"delay": 1})"), {"live", "delay"}},

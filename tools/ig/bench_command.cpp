@@ -37,16 +37,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
     "                [--error-samples N] [--match-px PX] [--skip-pass NAME] [--shader-dir DIR] [--out DIR]\n"
-    "  --methods LIST      comma-separated method names (default: all)\n"
-    "  --sweep             every knob value of each method's sweep (default: its default knob only)\n"
-    "  --frames N          N frames spread evenly over the flight (default: every scenario frame)\n"
-    "  --size WxH          image size (default: the scenario's)\n"
-    "  --fov DEG           vertical field of view (default: the scenario's)\n"
-    "  --error-samples N   frames compared with the reference (default 10, spread evenly)\n"
-    "  --match-px PX       horizon error for the matched-error table (default: twolevel's default)\n"
-    "  --skip-pass NAME    cost breakdown: twolevel draws without its pass NAME (level1, band,\n"
-    "                      level0, count); repeatable. The images are then wrong on purpose.\n"
-    "  --out DIR           output folder (default out/<scenario>_bench)\n"
+    "Flies every LOD method along the scenario's path and reports frame time against image error\n"
+    "versus the reference renderer (docs/bench.md): results.csv, results.md, error_vs_time.png.\n"
     "Exit status: 0 ok, 1 the run failed (or the plot could not be drawn), 2 bad arguments.\n";
 
 using Clock = std::chrono::steady_clock;
@@ -115,18 +107,39 @@ Args parse_args(const std::vector<std::string>& a) {
   Args args;
   CLI::App app("ig bench");
   std::optional<std::string> methods;
-  app.add_option("scenario", args.scenario);
-  app.add_option("--methods", methods);
-  app.add_flag("--sweep", args.sweep);
-  app.add_option("--frames", args.frames)->check(positive_int());
-  add_size_option(app, "--size", args.run.width, args.run.height);
-  app.add_option("--fov", args.fov)->check(positive_number());
-  app.add_option("--error-samples", args.error_samples)->check(positive_int());
-  app.add_option("--match-px", args.match_px)->check(positive_number());
-  app.add_option("--skip-pass", args.skip_passes)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->expected(1)->allow_extra_args(false);
-  app.add_option("--shader-dir", args.shader_dir);
-  app.add_option("--out", args.out_dir);
+  app.add_option("scenario", args.scenario, "the scenario whose path every method flies (docs/scenario.md)")
+      ->option_text("SCENARIO.json");
+  app.add_option("--methods", methods, "comma-separated method names, or all (default: all)")->option_text("LIST");
+  app.add_flag("--sweep", args.sweep,
+               "every knob value of each method's sweep (default: each method at its default knob only)");
+  app.add_option("--frames", args.frames,
+                 "N frames spread evenly over the flight, first and last included (default: every scenario frame)")
+      ->check(positive_int())
+      ->option_text("N");
+  add_size_option(app, "--size", args.run.width, args.run.height)
+      ->description("image size in pixels (default: the scenario's)")
+      ->option_text("WxH");
+  app.add_option("--fov", args.fov, "vertical field of view, degrees in (0, 179] (default: the scenario's)")
+      ->check(positive_number())
+      ->option_text("DEG");
+  app.add_option("--error-samples", args.error_samples,
+                 "frames compared with the reference, spread evenly over the timed ones (default 10)")
+      ->check(positive_int())
+      ->option_text("N");
+  app.add_option("--match-px", args.match_px,
+                 "horizon error in pixels for the matched-error table (default: the two-level method's at its "
+                 "default knob)")
+      ->check(positive_number())
+      ->option_text("PX");
+  app.add_option("--skip-pass", args.skip_passes,
+                 "cost breakdown: the two-level method draws without its pass NAME (level1, band, level0, "
+                 "count); repeatable. The images are then wrong on purpose")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->expected(1)->allow_extra_args(false)
+      ->option_text("NAME");
+  app.add_option("--shader-dir", args.shader_dir,
+                 "where the GLSL shaders are (default: shaders/ beside the binary, or $IG_SHADER_DIR)")
+      ->option_text("DIR");
+  app.add_option("--out", args.out_dir, "output folder (default out/<scenario>_bench)")->option_text("DIR");
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
   if (args.run.width > 16384 || args.run.height > 16384) throw UsageError("--size: at most 16384x16384");

@@ -53,8 +53,55 @@ double parse_double(const std::string& flag, const std::string& v) {
   return *d;
 }
 
+namespace {
+// `text` broken into lines of at most `width` characters (words kept whole).
+std::vector<std::string> wrap(const std::string& text, std::size_t width) {
+  std::vector<std::string> lines(1);
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!lines.back().empty() && lines.back().size() + 1 + word.size() > width) lines.emplace_back();
+    lines.back() += (lines.back().empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return lines;
+}
+}  // namespace
+
+std::string describe_options(const CLI::App& app, int width) {
+  constexpr std::size_t kColumn = 26;  // where descriptions start
+  std::string out;
+  auto block = [&](const std::string& head, const std::string& description) {
+    const auto lines = wrap(description, std::size_t(std::max(width, 60)) - kColumn);
+    std::string first = "  " + head;
+    if (first.size() + 1 < kColumn) {
+      first.resize(kColumn, ' ');
+    } else {
+      out += first + "\n";
+      first = std::string(kColumn, ' ');
+    }
+    out += first + lines.front() + "\n";
+    for (std::size_t k = 1; k < lines.size(); ++k) out += std::string(kColumn, ' ') + lines[k] + "\n";
+  };
+  const auto positionals = app.get_options([](const CLI::Option* o) { return o->get_positional(); });
+  if (!positionals.empty()) out += "arguments:\n";
+  for (const CLI::Option* o : positionals) block(o->get_option_text().empty() ? o->get_name() : o->get_option_text(), o->get_description());
+  const auto options = app.get_options([](const CLI::Option* o) { return o->nonpositional(); });
+  if (!options.empty()) out += "options:\n";
+  for (const CLI::Option* o : options) {
+    std::string head = o->get_name();
+    if (!o->get_option_text().empty()) head += " " + o->get_option_text();
+    block(head, o->get_description());
+  }
+  block("--help", "print this help and exit");
+  return out;
+}
+
 void parse_command_line(CLI::App& app, const std::vector<std::string>& argv) {
   app.set_help_flag();
+  if (help_requested(argv)) throw HelpRequested{describe_options(app)};
   app.allow_extras();
   for (CLI::Option* option : app.get_options())  // given twice, the last value counts (repeatable ones keep all)
     if (option->get_multi_option_policy() == CLI::MultiOptionPolicy::Throw)

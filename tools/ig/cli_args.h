@@ -1,7 +1,10 @@
 #pragma once
 // The subcommands' command lines, parsed by CLI11: the checks every command
 // shares (as CLI11 validators, so a bad value reads "--flag: reason") and one
-// way to run the parse. Each command keeps its own usage text (--help).
+// way to run the parse. Each command keeps its own synopsis (the usage
+// lines); --help prints it followed by every option's description, taken
+// from the options themselves (option_text: the value's name, e.g. "DIR";
+// description: what it does and its default), so the two cannot disagree.
 
 #include <iostream>
 #include <optional>
@@ -17,6 +20,15 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Thrown by parse_command_line on --help: the option list to print.
+struct HelpRequested {
+  std::string options;
+};
+
+// Every positional and option of `app` with its description, one block
+// each, wrapped to `width` columns.
+std::string describe_options(const CLI::App& app, int width = 100);
+
 // --help or -h anywhere among the arguments.
 inline bool help_requested(const std::vector<std::string>& argv) {
   for (const auto& a : argv)
@@ -25,20 +37,19 @@ inline bool help_requested(const std::vector<std::string>& argv) {
 }
 
 // A subcommand's argument parsing: the parsed arguments, or nullopt after
-// printing the usage text, to stdout on --help (the caller exits with 0:
-// `return help_requested(argv) ? 0 : 2`), else to stderr after
-// "COMMAND: reason" (the caller exits with 2).
+// printing to stdout on --help the usage text and the options' descriptions
+// (the caller exits with 0: `return help_requested(argv) ? 0 : 2`), else to
+// stderr "COMMAND: reason" and the usage text (the caller exits with 2).
 template <class Parse>
 auto parse_or_usage(const char* command, const char* usage, Parse parse, const std::vector<std::string>& argv)
     -> std::optional<decltype(parse(argv))> {
-  if (help_requested(argv)) {
-    std::cout << usage;
-    return std::nullopt;
-  }
   try {
     return parse(argv);
+  } catch (const HelpRequested& h) {
+    std::cout << usage << "\n" << h.options;
+    return std::nullopt;
   } catch (const UsageError& e) {
-    std::cerr << command << ": " << e.what() << "\n" << usage;
+    std::cerr << command << ": " << e.what() << "\n" << usage << "(" << command << " --help describes every option)\n";
     return std::nullopt;
   }
 }
@@ -61,7 +72,7 @@ int run_command(const char* command, const char* usage, Parse parse, const std::
 // Parses argv with the options and positionals `app` declares. Given twice,
 // an option's last value counts. Throws UsageError on any mistake: CLI11's
 // message, or "unknown option X" / "unexpected argument X" for what nothing
-// declared. No generated --help: the caller prints its usage text.
+// declared; HelpRequested (describe_options(app)) when argv asks for --help.
 void parse_command_line(CLI::App& app, const std::vector<std::string>& argv);
 
 // Value checks shared by the commands, as CLI11 validators.

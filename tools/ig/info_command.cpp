@@ -28,12 +28,6 @@ constexpr const char* kUsage =
     "raster or VRT, 16-bit PNG or terrain-RGB PNG; a FOLDER is a mosaic of the DEM tiles\n"
     "in it) and prints one JSON object: size, spacing in metres, min/max/mean height,\n"
     "filled nodata samples, CRS, corner coordinates, and for a folder the tile counts.\n"
-    "  --encoding E  how to decode: auto (default; PNGs by their layout, else GDAL),\n"
-    "                png16 (metres = value * scale + offset), terrain-rgb\n"
-    "                (metres = -10000 + (R*65536 + G*256 + B) * 0.1), gdal\n"
-    "  --scale S     png16 scale (default 1)\n"
-    "  --offset O    png16 offset in metres (default 0)\n"
-    "  --spacing M   sample spacing in metres (images have none; default 1)\n"
     "Exit status: 0 ok, 1 the file could not be loaded, 2 bad arguments.\n";
 
 double parse_number(const std::string& option, const std::string& text) {
@@ -80,11 +74,14 @@ std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOpt
   CLI::App app("ig info");
   std::vector<std::string> files;
   std::optional<std::string> encoding, scale, offset, spacing;
-  app.add_option("file", files);
-  app.add_option("--encoding", encoding);
-  app.add_option("--scale", scale);
-  app.add_option("--offset", offset);
-  app.add_option("--spacing", spacing);
+  app.add_option("file", files, "the DEM file, or a folder of DEM tiles read as one mosaic")->option_text("FILE|FOLDER");
+  app.add_option("--encoding", encoding,
+                 "how to decode: auto (default; PNGs by their layout, else GDAL), png16 (metres = value * scale "
+                 "+ offset), terrain-rgb (metres = -10000 + (R*65536 + G*256 + B) * 0.1), gdal")
+      ->option_text("E");
+  app.add_option("--scale", scale, "png16: metres per count (default 1)")->option_text("S");
+  app.add_option("--offset", offset, "png16: metres added after scaling (default 0)")->option_text("O");
+  app.add_option("--spacing", spacing, "sample spacing in metres (images carry none: default 1)")->option_text("M");
   try {
     parse_command_line(app, args);
   } catch (const UsageError& e) {
@@ -111,14 +108,13 @@ std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOpt
 }  // namespace
 
 int run_info_command(const std::vector<std::string>& args) {
-  if (help_requested(args)) {
-    std::cout << kUsage;
-    return 0;
-  }
   terrain::DemLoadOptions opts;
   std::string file;
   try {
     file = parse_args(args, opts);
+  } catch (const HelpRequested& h) {
+    std::cout << kUsage << "\n" << h.options;
+    return 0;
   } catch (const UsageError& e) {
     std::cerr << "ig info: " << e.what() << "\n";
     return 2;

@@ -8,13 +8,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
 #include "commands.h"
 #include "io/recording.h"
+#include "session/capture_schedule.h"
 #include "session/pose_feed.h"
 #include "session/run_outputs.h"
 #include "session/scenario_runner.h"
@@ -25,7 +25,10 @@ namespace {
 constexpr const char* kUsage =
     "usage: ig run SCENARIO.json [--out DIR] [--frames N] [--size WxH] [--method NAME]\n"
     "              [--recording FILE] [--headless | --window [--fullscreen] [--vsync on|off]]\n"
-    "              [--shader-dir DIR] [--quiet]\n";
+    "              [--shader-dir DIR] [--quiet]\n"
+    "Replays a scenario (docs/scenario.md) frame by frame, frame k at sim time k * time.step_s, and\n"
+    "writes frames.csv, summary.json, the capture PNGs (capture.times_s, capture.every_s),\n"
+    "final.png and frametime.png. Exit status: 0 ok, 1 the run failed, 2 bad arguments.\n";
 
 struct Args {
   std::string scenario;
@@ -39,23 +42,56 @@ Args parse_args(const std::vector<std::string>& a) {
   Args args;
   CLI::App app("ig run");
   std::optional<std::string> vsync;
-  app.add_option("scenario", args.scenario);
-  app.add_option("--out", args.out_dir);
-  app.add_option("--frames", args.run.frames)->check(positive_int());
-  add_size_option(app, "--size", args.run.width, args.run.height);
-  app.add_option("--method", args.run.method);
-  app.add_option("--recording", args.recording);
-  auto* headless = app.add_flag("--headless");
-  auto* window = app.add_flag("--window")->excludes(headless);
-  app.add_flag("--fullscreen", args.run.fullscreen)->excludes(headless);
-  app.add_option("--vsync", vsync)->check(one_of({"on", "off"}));
-  app.add_option("--shader-dir", args.run.shader_dir);
-  app.add_flag("--quiet", args.quiet);
+  app.add_option("scenario", args.scenario, "the scenario file to replay (JSON, docs/scenario.md)")
+      ->option_text("SCENARIO.json");
+  app.add_option("--out", args.out_dir, "output folder, created if missing (default out/<scenario name>)")
+      ->option_text("DIR");
+  app.add_option("--frames", args.run.frames,
+                 "render the first N frames only (sim time 0 to (N-1) * time.step_s; default: the scenario's "
+                 "whole duration, or the recording's length); capture times after the last rendered frame are "
+                 "not saved, and ig run names them in a warning")
+      ->check(positive_int())
+      ->option_text("N");
+  add_size_option(app, "--size", args.run.width, args.run.height)
+      ->description("image size in pixels, e.g. 320x240 (default: the scenario's render.width x render.height)")
+      ->option_text("WxH");
+  app.add_option("--method", args.run.method,
+                 "terrain LOD method: twolevel, reference, roam, geomipmap, chunked, quadtree or cdlod "
+                 "(default: the scenario's render.method, else twolevel)")
+      ->option_text("NAME");
+  app.add_option("--recording", args.recording,
+                 "replay the pose datagrams of an IG recording (ig serve --record, ig send --record) through "
+                 "the live decoders and pose filter on a simulated clock, instead of the scenario's path")
+      ->option_text("FILE");
+  auto* headless = app.add_flag("--headless")->description("render off-screen (EGL, no display needed; the default)");
+  auto* window = app.add_flag("--window")->description("show the first channel in a window (GLFW, needs X); stops when it is closed")
+                     ->excludes(headless);
+  app.add_flag("--fullscreen", args.run.fullscreen, "a full-screen window (implies --window)")->excludes(headless);
+  app.add_option("--vsync", vsync, "windowed: wait for the display's refresh, on or off (default: render.vsync, on)")
+      ->check(one_of({"on", "off"}))
+      ->option_text("on|off");
+  app.add_option("--shader-dir", args.run.shader_dir,
+                 "where the GLSL shaders are (default: shaders/ beside the binary, or $IG_SHADER_DIR)")
+      ->option_text("DIR");
+  app.add_flag("--quiet", args.quiet, "no progress line on the terminal (warnings and the summary lines remain)");
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
   if (vsync) args.run.vsync = *vsync == "on";
   args.run.headless = !(window->count() || args.run.fullscreen);
   return args;
+}
+
+// "6, 12 s" (the first few of `times`, and how many more).
+std::string list_times(const std::vector<double>& times, std::size_t total) {
+  std::string s;
+  for (double t : times) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", t);
+    s += (s.empty() ? "" : ", ") + std::string(buf);
+  }
+  s += " s";
+  if (total > times.size()) s += " and " + std::to_string(total - times.size()) + " more";
+  return s;
 }
 
 // ig run with its parsed arguments: the exit status.
@@ -83,11 +119,23 @@ int run(const Args& args) {
       frames = int((records.back().receive_time_s - t0) / s.time_step_s) + 1;
   }
 
-  // Frames to capture: the nearest frame to each capture time inside the run.
-  std::set<int> capture_frames;
-  for (double t : s.capture_times_s)
-    if (const int k = std::min(int(std::lround(t / s.time_step_s)), io::scenario_frame_count(s) - 1); k < frames)
-      capture_frames.insert(k);
+  // Captures: the frame nearest each scheduled time; the scenario's last
+  // frame also serves times after it (within the duration: up to half a step).
+  const int scenario_frames = io::scenario_frame_count(s);
+  auto capture_time = [&](int k) { return k == scenario_frames - 1 ? std::max(k * s.time_step_s, s.duration_s)
+                                                                   : k * s.time_step_s; };
+  session::CaptureSchedule captures(s, session::CaptureSchedule::nearest_frame_tolerance(s.time_step_s));
+  {
+    session::CaptureSchedule reached = captures;  // what the last frame to render leaves unserved
+    reached.take(capture_time(frames - 1));
+    if (const std::size_t n = reached.pending_count(s.duration_s); n > 0)
+      std::cerr << "ig run: warning: " << (args.run.frames ? "--frames " + std::to_string(frames) + " renders"
+                                                           : "the recording covers")
+                << " frames 0.." << frames - 1 << " (sim time up to " << (frames - 1) * s.time_step_s
+                << " s of the scenario's " << s.duration_s << " s): capture time" << (n == 1 ? "" : "s") << " "
+                << list_times(reached.pending(s.duration_s, 8), n) << " fall" << (n == 1 ? "s" : "")
+                << " after the last rendered frame and " << (n == 1 ? "is" : "are") << " not saved\n";
+  }
 
   session::RunOutputs outputs(out, "ig run", !args.quiet && isatty(STDERR_FILENO));
   size_t next_record = 0;
@@ -103,7 +151,7 @@ int run(const Args& args) {
     } else {
       f = runner.render_frame(k);
     }
-    outputs.frame(runner, f, capture_frames.count(k) > 0, k == frames - 1, frames,
+    outputs.frame(runner, f, captures.take(capture_time(k)), k == frames - 1, frames,
                   feed ? std::function<void(std::vector<stats::Cell>&)>(
                              [&](std::vector<stats::Cell>& row) { feed->append_columns(row); })
                        : nullptr);

@@ -44,21 +44,8 @@ constexpr const char* kUsage =
     "       ig send SCENARIO.json --record FILE [--protocol ...] [options as above but --flood]\n"
     "       ig send SCENARIO.json --can IFNAME [--can-fd] [--can-node N] [--can-altitude 320|322|332]\n"
     "               [--can-float-position] [--rate HZ] [--duration S] [impairments as above]\n"
-    "  --flood N sends N packets as fast as the socket takes them (no pacing).\n"
-    "  Host behaviours seen in real simulation hosts:\n"
-    "  --no-timestamp  no sender time (CIGI: timestamp-valid bit clear, as CigiMiniHost;\n"
-    "                  native: no sender-time field); FGNetFDM never has one.\n"
-    "  --pairs N       every Nth packet is held up and sent back to back with the next.\n"
-    "  --stall-every N every N packets the host's own frame stalls: gaps of A then B ms\n"
-    "                  (--stall-ms, default 133,17), each pose taken when it is sent, as\n"
-    "                  FlightGear's main loop does.\n"
-    "  --cigi-sync     CIGI synchronous host: wait for the IG's Start Of Frame echoing each\n"
-    "                  host frame before sending the next (needs --cigi-listen).\n"
-    "  --record FILE writes the datagrams to an IG recording (ig serve --record's format)\n"
-    "  instead of sending them, each received when it would have been sent, at once (no\n"
-    "  pacing, no socket): ig run --recording FILE replays them on a simulated clock.\n"
-    "  --can IFNAME sends each pose as CANaerospace frames (geodetic position), or with\n"
-    "  --can-fd as one 64-byte CAN FD pose frame (docs/can.md); impairments act per pose.\n";
+    "Plays a scenario's path (placed on its terrain) as pose packets in real time: the host side of\n"
+    "ig serve (docs/live-ig.md). Impairments are seeded and reproducible. Also build/bin/ig-send.\n";
 
 struct Args {
   std::string scenario, to;
@@ -84,35 +71,98 @@ Args parse_args(const std::vector<std::string>& a) {
   CLI::App app("ig send");
   std::string protocol = "native";
   std::optional<std::string> stall_ms;
-  app.add_option("scenario", args.scenario);
-  auto* to = app.add_option("--to", args.to);
-  app.add_option("--protocol", protocol)->check(one_of({"native", "cigi", "fgfdm"}));
-  app.add_option("--rate", args.rate_hz)->check(positive_number());
-  app.add_option("--duration", args.duration_s)->check(positive_number());
-  app.add_flag("--geodetic", args.geodetic);
-  app.add_option("--loss", args.loss)->check(probability());
-  app.add_option("--burst-loss", args.burst_loss)->check(probability());
-  app.add_option("--burst-length", args.burst_length)->check(positive_int());
-  app.add_option("--jitter-ms", args.jitter_ms)->check(positive_number());
-  app.add_option("--reorder", args.reorder)->check(probability());
-  app.add_option("--duplicate", args.duplicate)->check(probability());
-  app.add_option("--corrupt", args.corrupt)->check(probability());
-  app.add_option("--seed", args.seed)->check(positive_int());
-  app.add_option("--flood", args.flood)->check(positive_int());
-  auto* cigi_listen = app.add_option("--cigi-listen", args.cigi_listen);
-  app.add_flag("--cigi-sync", args.cigi_sync)->needs(cigi_listen);
-  app.add_flag("--no-timestamp", args.no_timestamp);
-  app.add_option("--pairs", args.pairs)->check(positive_int());
-  app.add_option("--stall-every", args.stall_every)->check(positive_int());
-  app.add_option("--stall-ms", stall_ms);
-  app.add_option("--log", args.log);
-  auto* record = app.add_option("--record", args.record)->excludes(to)->excludes(cigi_listen);
-  app.add_flag("--quiet", args.quiet);
-  auto* can = app.add_option("--can", args.can)->excludes(to)->excludes(record);
-  app.add_flag("--can-fd", args.can_fd)->needs(can);
-  app.add_flag("--can-float-position", args.can_float_position)->needs(can);
-  app.add_option("--can-node", args.can_node)->check(can_node_id());
-  app.add_option("--can-altitude", args.can_altitude)->check(can_altitude_id());
+  app.add_option("scenario", args.scenario, "the scenario whose path is sent (docs/scenario.md)")
+      ->option_text("SCENARIO.json");
+  auto* to = app.add_option("--to", args.to, "where to send the pose datagrams (unicast or multicast)")
+                 ->option_text("ADDR:PORT");
+  app.add_option("--protocol", protocol,
+                 "native (IGPS), cigi (CIGI 3.3) or fgfdm (FlightGear FGNetFDM v24); cigi and fgfdm need a "
+                 "terrain with a geographic georeference (default native)")
+      ->check(one_of({"native", "cigi", "fgfdm"}))
+      ->option_text("NAME");
+  app.add_option("--rate", args.rate_hz, "poses a second (default 60)")->check(positive_number())->option_text("HZ");
+  app.add_option("--duration", args.duration_s, "seconds of the path to send (default: the scenario's duration)")
+      ->check(positive_number())
+      ->option_text("S");
+  app.add_flag("--geodetic", args.geodetic, "native: send latitude, longitude and altitude instead of local metres");
+  app.add_option("--loss", args.loss, "probability that a packet is dropped (default 0)")
+      ->check(probability())
+      ->option_text("P");
+  app.add_option("--burst-loss", args.burst_loss,
+                 "probability that a burst of --burst-length packets is dropped (default 0)")
+      ->check(probability())
+      ->option_text("P");
+  app.add_option("--burst-length", args.burst_length, "packets a loss burst drops (default 10)")
+      ->check(positive_int())
+      ->option_text("N");
+  app.add_option("--jitter-ms", args.jitter_ms, "each send time delayed by up to J ms, uniformly (default 0)")
+      ->check(positive_number())
+      ->option_text("J");
+  app.add_option("--reorder", args.reorder, "probability that a packet is overtaken by the next (default 0)")
+      ->check(probability())
+      ->option_text("P");
+  app.add_option("--duplicate", args.duplicate, "probability that a packet is sent twice (default 0)")
+      ->check(probability())
+      ->option_text("P");
+  app.add_option("--corrupt", args.corrupt, "probability that a packet has a byte changed (default 0)")
+      ->check(probability())
+      ->option_text("P");
+  app.add_option("--seed", args.seed, "seed of the impairments' random draws (default 1)")
+      ->check(positive_int())
+      ->option_text("N");
+  app.add_option("--flood", args.flood, "send N packets as fast as the socket takes them (no pacing), each the path "
+                                         "at the moment it is sent")
+      ->check(positive_int())
+      ->option_text("N");
+  auto* cigi_listen = app.add_option("--cigi-listen", args.cigi_listen,
+                                     "collect the IG's CIGI Start Of Frame replies there and report their count and "
+                                     "whether the frame counter always increased")
+                          ->option_text("ADDR:PORT");
+  app.add_flag("--cigi-sync", args.cigi_sync,
+               "a synchronous CIGI host: wait for the IG's Start Of Frame echoing each host frame before sending "
+               "the next (needs --cigi-listen and --protocol cigi)")
+      ->needs(cigi_listen);
+  app.add_flag("--no-timestamp", args.no_timestamp,
+               "no sender time (CIGI: timestamp-valid bit clear, as CigiMiniHost; native: no sender-time field); "
+               "FGNetFDM never has one");
+  app.add_option("--pairs", args.pairs, "every Nth packet is held up and sent back to back with the next (N >= 2)")
+      ->check(positive_int())
+      ->option_text("N");
+  app.add_option("--stall-every", args.stall_every,
+                 "every N packets the host's own frame stalls, as FlightGear's main loop does: gaps of A then B "
+                 "ms (--stall-ms), each pose taken when it is sent")
+      ->check(positive_int())
+      ->option_text("N");
+  app.add_option("--stall-ms", stall_ms, "the two stall gaps of --stall-every, milliseconds (default 133,17)")
+      ->option_text("A,B");
+  app.add_option("--log", args.log,
+                 "write every pose sent as CSV (with the sender's steady-clock time), continued 0.5 s past the "
+                 "last packet")
+      ->option_text("FILE");
+  auto* record = app.add_option("--record", args.record,
+                                "write the datagrams to an IG recording instead of sending them (no socket, no "
+                                "pacing); ig run --recording FILE replays them")
+                     ->excludes(to)
+                     ->excludes(cigi_listen)
+                     ->option_text("FILE");
+  app.add_flag("--quiet", args.quiet, "no report lines at the end");
+  auto* can = app.add_option("--can", args.can,
+                             "send each pose on this SocketCAN interface as CANaerospace frames (geodetic "
+                             "position) instead of UDP (docs/can.md); impairments act per pose")
+                  ->excludes(to)
+                  ->excludes(record)
+                  ->option_text("IFNAME");
+  app.add_flag("--can-fd", args.can_fd, "send each pose as one 64-byte CAN FD pose frame instead")->needs(can);
+  app.add_flag("--can-float-position", args.can_float_position,
+               "CANaerospace latitude and longitude as 32-bit floats (default: doubles)")
+      ->needs(can);
+  app.add_option("--can-node", args.can_node, "the sending node's id, 0..255 (default 1)")
+      ->check(can_node_id())
+      ->option_text("N");
+  app.add_option("--can-altitude", args.can_altitude,
+                 "CANaerospace identifier the altitude is sent with: 320, 322 or 332 (default 322)")
+      ->check(can_altitude_id())
+      ->option_text("ID");
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");
   args.protocol = protocol == "cigi" ? io::Protocol::Cigi : protocol == "fgfdm" ? io::Protocol::FgNetFdm

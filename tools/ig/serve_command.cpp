@@ -28,6 +28,7 @@
 #include "io/net/udp_socket.h"
 #include "io/recording.h"
 #include "io/wire/cigi.h"
+#include "session/capture_schedule.h"
 #include "session/pose_feed.h"
 #include "session/run_outputs.h"
 #include "session/scenario_runner.h"
@@ -44,21 +45,10 @@ constexpr const char* kUsage =
     "                [--size WxH] [--method NAME] [--modbus ADDR:PORT] [--latency smooth|latest|sync] [--quiet]\n"
     "                [--host-surface full|drawn]\n"
     "                [--can IFNAME [--can-altitude 320|322|332] [--can-node N] [--can-max-age-ms MS]]\n"
-    "  ADDR may be empty (':5500' = all interfaces); with --multicast GROUP every\n"
-    "  source binds GROUP:PORT and joins the group on loopback.\n"
-    "  --modbus ADDR:PORT: Modbus TCP status/control server (docs/modbus.md).\n"
-    "  --latency: smooth (interpolate behind an adaptive playout delay, default), latest (newest\n"
-    "  pose extrapolated to the frame's display time) or sync (CIGI synchronous: one frame per\n"
-    "  host IG Control, answered with Start Of Frame; needs --cigi). Default: the config's\n"
-    "  live.latency (docs/pose-filter.md).\n"
-    "  --cigi-reply: Start Of Frame every frame, with the answers to the host's HAT/HOT and\n"
-    "  line-of-sight requests (docs/host-services.md). Native height / line-of-sight queries\n"
-    "  on the --udp port are answered to their sender. CIGI View Control / View Definition\n"
-    "  set the channel's view offsets and vertical field of view. --host-surface drawn: HAT/HOT\n"
-    "  from the surface as drawn (Level0 outside the two-level method's Level1), default full.\n"
-    "  --can IFNAME: SocketCAN pose source, CANaerospace and the CAN FD pose (docs/can.md);\n"
-    "  altitude from id 322 unless --can-altitude, any node unless --can-node, fields\n"
-    "  older than --can-max-age-ms (100) are stale. A missing or down interface is retried.\n";
+    "The live IG (docs/live-ig.md): renders the ownship pose received from a host at its own rate\n"
+    "and logs every frame like ig run. At least one pose source (--udp, --cigi, --fgfdm, --can).\n"
+    "ADDR may be empty (':5500' = all interfaces). Stops after --frames / --seconds, on SIGINT or\n"
+    "SIGTERM, or when the window closes. Exit status: 0 ok, 1 failed, 2 bad arguments.\n";
 
 std::atomic<bool> g_stop{false};
 extern "C" void on_signal(int) { g_stop = true; }
@@ -83,31 +73,80 @@ Args parse_args(const std::vector<std::string>& a) {
   Args args;
   CLI::App app("ig serve");
   std::optional<std::string> host_surface;
-  app.add_option("--config", args.config);
-  app.add_option("--udp", args.udp);
-  auto* cigi = app.add_option("--cigi", args.cigi);
-  app.add_option("--cigi-reply", args.cigi_reply)->needs(cigi);
-  app.add_option("--fgfdm", args.fgfdm);
-  app.add_option("--multicast", args.multicast);
-  app.add_option("--channel", args.channel);
-  app.add_option("--record", args.record);
-  app.add_option_function<std::string>("--latency", [&](const std::string& v) { args.latency = io::parse_latency_mode(v); })
-      ->check(one_of({"smooth", "latest", "sync"}));
-  app.add_option("--modbus", args.modbus);
-  app.add_option("--host-surface", host_surface)->check(one_of({"full", "drawn"}));
-  app.add_option("--can", args.can);
-  app.add_option("--can-altitude", args.can_altitude)->check(can_altitude_id());
-  app.add_option("--can-node", args.can_node)->check(can_node_id());
-  app.add_option("--can-max-age-ms", args.can_max_age_ms)->check(positive_number());
-  app.add_option("--out", args.out_dir);
-  auto* frames = app.add_option("--frames", args.frames)->check(positive_int());
-  app.add_option("--seconds", args.seconds)->check(positive_number())->excludes(frames);
-  app.add_option("--rate", args.rate_hz)->check(positive_number());
-  add_size_option(app, "--size", args.run.width, args.run.height);
-  app.add_option("--method", args.run.method);
-  auto* headless = app.add_flag("--headless");
-  auto* window = app.add_flag("--window")->excludes(headless);
-  app.add_flag("--quiet", args.quiet);
+  app.add_option("--config", args.config,
+                 "scenario file giving the terrain, render settings, channels and capture schedule; its path's "
+                 "first key is the pose shown until the first packet (default scenarios/default.json)")
+      ->option_text("FILE");
+  app.add_option("--udp", args.udp, "receive native IGPS pose datagrams on this port (docs/protocol.md); native "
+                                    "height and line-of-sight queries are answered to their sender")
+      ->option_text("ADDR:PORT");
+  auto* cigi = app.add_option("--cigi", args.cigi, "receive CIGI 3.3 host datagrams on this port")
+                   ->option_text("ADDR:PORT");
+  app.add_option("--cigi-reply", args.cigi_reply,
+                 "send CIGI Start Of Frame there every frame, with the answers to the host's HAT/HOT and "
+                 "line-of-sight requests (docs/host-services.md); needs --cigi")
+      ->needs(cigi)
+      ->option_text("HOST:PORT");
+  app.add_option("--fgfdm", args.fgfdm, "receive FlightGear FGNetFDM v24 datagrams on this port")
+      ->option_text("ADDR:PORT");
+  app.add_option("--multicast", args.multicast,
+                 "every UDP source binds GROUP:PORT and joins the group on loopback, so several channel "
+                 "processes share one stream")
+      ->option_text("GROUP");
+  app.add_option("--channel", args.channel,
+                 "render this channel of the config (its view offsets and field of view); default: the first")
+      ->option_text("NAME");
+  app.add_option("--record", args.record,
+                 "write every received datagram with its receive time to FILE (replay: ig run --recording)")
+      ->option_text("FILE");
+  app.add_option_function<std::string>("--latency", [&](const std::string& v) { args.latency = io::parse_latency_mode(v); },
+                                       "smooth: interpolate behind an adaptive playout delay; latest: the newest pose "
+                                       "extrapolated to the frame's display time; sync: CIGI synchronous, one frame "
+                                       "per host IG Control (needs --cigi). Default: the config's live.latency, else "
+                                       "smooth (docs/pose-filter.md)")
+      ->check(one_of({"smooth", "latest", "sync"}))
+      ->option_text("MODE");
+  app.add_option("--modbus", args.modbus, "Modbus TCP status and control server on this port (docs/modbus.md)")
+      ->option_text("ADDR:PORT");
+  app.add_option("--host-surface", host_surface,
+                 "what HAT/HOT answers are measured on: full (the full-resolution surface, default) or drawn "
+                 "(the surface this frame drew: Level0 outside the two-level method's Level1)")
+      ->check(one_of({"full", "drawn"}))
+      ->option_text("full|drawn");
+  app.add_option("--can", args.can,
+                 "SocketCAN pose source: CANaerospace parameters and the CAN FD pose frame (docs/can.md); a "
+                 "missing or down interface is reported and retried")
+      ->option_text("IFNAME");
+  app.add_option("--can-altitude", args.can_altitude,
+                 "CANaerospace identifier the altitude is read from: 320, 322 or 332 (default 322)")
+      ->check(can_altitude_id())
+      ->option_text("ID");
+  app.add_option("--can-node", args.can_node, "take CAN poses from this node only, 0..255 (default: any node)")
+      ->check(can_node_id())
+      ->option_text("N");
+  app.add_option("--can-max-age-ms", args.can_max_age_ms,
+                 "CAN pose fields older than this are stale, milliseconds (default 100)")
+      ->check(positive_number())
+      ->option_text("MS");
+  app.add_option("--out", args.out_dir, "output folder (default out/serve_<scenario>_<channel>)")->option_text("DIR");
+  auto* frames = app.add_option("--frames", args.frames, "stop after N frames (default: run until stopped)")
+                     ->check(positive_int())
+                     ->option_text("N");
+  app.add_option("--seconds", args.seconds, "stop after S seconds (default: run until stopped)")
+      ->check(positive_number())
+      ->excludes(frames)
+      ->option_text("S");
+  app.add_option("--rate", args.rate_hz, "headless frame rate, frames a second (default 60; a window follows vsync)")
+      ->check(positive_number())
+      ->option_text("HZ");
+  add_size_option(app, "--size", args.run.width, args.run.height)
+      ->description("image size in pixels (default: the config's render.width x render.height)")
+      ->option_text("WxH");
+  app.add_option("--method", args.run.method, "terrain LOD method (default: the config's render.method, else twolevel)")
+      ->option_text("NAME");
+  auto* headless = app.add_flag("--headless")->description("render off-screen (the default)");
+  auto* window = app.add_flag("--window")->description("show the view in a window (GLFW, needs X)")->excludes(headless);
+  app.add_flag("--quiet", args.quiet, "no progress line and no Modbus or CAN status lines");
   parse_command_line(app, a);
   if (!args.udp && !args.cigi && !args.fgfdm && !args.can)
     throw UsageError("no pose source: give --udp, --cigi, --fgfdm or --can");
@@ -201,10 +240,9 @@ int run(const Args& args) {
   const double start = io::net::steady_now_s();
   double next_tick = start;
   const int total = args.frames.value_or(0);
-  // capture.times_s: seconds since the IG started; the first frame at or after each.
-  std::vector<double> capture_times = runner.scenario().capture_times_s;
-  std::sort(capture_times.begin(), capture_times.end());
-  std::size_t next_capture = 0;
+  // capture.times_s and capture.every_s: seconds since the IG started; the
+  // first frame at or after each.
+  session::CaptureSchedule captures(runner.scenario(), 0.0);
   double display_lead_s = 0.0;  // frame start -> frame complete, smoothed (the latest mode's lead)
   std::uint64_t sync_waits = 0, sync_frames = 0;
   std::optional<std::array<std::uint8_t, io::wire::kCigiStartOfFrameSize>> last_sof;
@@ -263,11 +301,7 @@ int run(const Args& args) {
     const bool last = (args.frames && k == *args.frames - 1) ||
                       (args.seconds && frame_start - start + (sync ? 0.0 : period) >= *args.seconds) || g_stop;
     // Controls take effect here, at the frame boundary, before rendering.
-    bool capture = false, frozen = false;
-    while (next_capture < capture_times.size() && frame_start - start >= capture_times[next_capture]) {
-      capture = true;
-      ++next_capture;
-    }
+    bool capture = captures.take(frame_start - start), frozen = false;
     if (control) {
       const auto applied = control->apply_controls();
       capture = capture || applied.capture;
@@ -286,7 +320,6 @@ int run(const Args& args) {
     const auto t0 = std::chrono::steady_clock::now();
     // Frozen: the last pose again; the sources are still drained and counted.
     const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
-    if (const std::string w = feed.take_outside_warning(); !w.empty()) std::cerr << "ig serve: " << w << "\n";
     last_pose = pose;
     const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const session::FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);

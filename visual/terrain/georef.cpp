@@ -30,6 +30,22 @@ std::optional<glm::dvec2> geodetic_to_local(const Heightfield& hf, double lat_de
   return glm::dvec2(i * hf.spacing_x_m, j * hf.spacing_y_m);
 }
 
+std::optional<glm::dvec2> local_to_geodetic(const Heightfield& hf, double x_m, double y_m) {
+  if (!hf.georef || !std::isfinite(x_m) || !std::isfinite(y_m)) return std::nullopt;
+  OGRSpatialReference wgs84, dem;
+  wgs84.SetWellKnownGeogCS("WGS84");
+  wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = lon, y = lat
+  if (dem.importFromWkt(hf.georef->crs_wkt.c_str()) != OGRERR_NONE) return std::nullopt;
+  dem.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&dem, &wgs84));
+  if (!ct) return std::nullopt;
+  const auto& g = hf.georef->grid_to_crs;
+  const double i = x_m / hf.spacing_x_m, j = y_m / hf.spacing_y_m;
+  double x = g[0] + i * g[1] + j * g[2], y = g[3] + i * g[4] + j * g[5];
+  if (!ct->Transform(1, &x, &y) || !std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
+  return glm::dvec2(y, x);
+}
+
 GeoReference make_geographic_georef(double lat0_deg, double lon0_deg, double spacing_x_m, double spacing_y_m) {
   OGRSpatialReference wgs84;
   wgs84.SetWellKnownGeogCS("WGS84");

@@ -152,6 +152,15 @@ std::size_t imagery_window_budget(int window_side, int tile) {
 }
 
 Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_side, const ImageryPaging& paging) {
+  // File-system checks first, so the common mistakes read plainly (GDAL's
+  // virtual paths, /vsicurl/ ..., are left to GDAL).
+  if (path.rfind("/vsi", 0) != 0) {
+    std::error_code fs_error;
+    const auto st = std::filesystem::status(path, fs_error);
+    if (path.empty() || st.type() == std::filesystem::file_type::not_found) throw DemError(path, "no such file");
+    if (fs_error) throw DemError(path, "cannot access: " + fs_error.message());
+    if (st.type() == std::filesystem::file_type::directory) throw DemError(path, "is a folder, not an image");
+  }
   gdal::register_once();
   gdal::QuietErrors quiet;
   // A relative file opened by its absolute path: the paged path's warped VRT

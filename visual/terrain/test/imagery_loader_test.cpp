@@ -249,4 +249,20 @@ TEST(ImageryLoader, ImageElsewhereIsRefusedAndPlainImagesSpanTheDem) {
   EXPECT_THROW(ig::terrain::load_imagery(hf, "/nonexistent/x.tif", 16384), ig::terrain::DemError);
 }
 
+// The common mistakes read plainly, naming the file.
+TEST(ImageryLoader, AMissingFileOrAFolderSaysSo) {
+  const auto hf = dem(61, 49);
+  auto message = [&](const std::string& path) {
+    try {
+      ig::terrain::load_imagery(hf, path, 16384);
+    } catch (const ig::terrain::DemError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message("/nonexistent/ortho.png"), "/nonexistent/ortho.png: no such file");
+  const std::string folder = fs::temp_directory_path().string();
+  EXPECT_EQ(message(folder), folder + ": is a folder, not an image");
+}
+
 }  // namespace
