@@ -379,7 +379,7 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   if (j.contains("twolevel")) r.twolevel = parse_twolevel(j["twolevel"], child(path, "twolevel"));
   if (j.contains("ground_detail")) r.shading.ground_detail = get_bool(j["ground_detail"], child(path, "ground_detail"));
   if (j.contains("antialiasing"))
-    r.antialiasing = get_choice(j["antialiasing"], child(path, "antialiasing"), {"msaa", "fxaa", "off"});
+    r.antialiasing = get_choice(j["antialiasing"], child(path, "antialiasing"), {"auto", "msaa", "fxaa", "off"});
   if (j.contains("msaa_samples"))
     r.msaa_samples = static_cast<int>(get_integer(j["msaa_samples"], child(path, "msaa_samples"), 2, 64));
   return r;

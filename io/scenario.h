@@ -64,8 +64,10 @@ struct RenderSpec {
   std::string earth_curvature = "auto";
   options::TwoLevelOptions twolevel;  // render.twolevel
   // Anti-aliasing of the IG framebuffer: "msaa" (msaa_samples per pixel,
-  // clamped to GL_MAX_SAMPLES), "fxaa" (a post-process edge filter) or "off".
-  std::string antialiasing = "msaa";
+  // clamped to GL_MAX_SAMPLES), "fxaa" (a post-process edge filter), "off",
+  // or "auto": msaa on a GPU, fxaa on a CPU rasterizer (llvmpipe), where
+  // multisampling costs 2.5-3.5 times the frame (docs/rendering.md).
+  std::string antialiasing = "auto";
   int msaa_samples = 4;
 };
 

@@ -48,6 +48,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   co.vsync = r.vsync;
   co.title = "ig - " + scenario_.name;
   context_ = gl::create_context(co);
+  r.antialiasing = resolve_antialiasing(r.antialiasing, context_->gl_renderer());
 
   scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit,
                                                   std::size_t(scenario_.terrain.imagery_budget_mb) << 20);
@@ -64,6 +65,13 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
     channels_.push_back(std::move(v));
   }
   prefetch_first_window();
+}
+
+std::string resolve_antialiasing(const std::string& setting, const std::string& gl_renderer) {
+  if (setting != "auto") return setting;
+  for (const char* cpu : {"llvmpipe", "softpipe", "Software Rasterizer", "SwiftShader"})
+    if (gl_renderer.find(cpu) != std::string::npos) return "fxaa";
+  return "msaa";
 }
 
 std::unique_ptr<gl::RenderTarget> make_frame_target(const io::RenderSpec& r, int width, int height) {

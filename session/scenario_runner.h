@@ -60,8 +60,11 @@ struct FrameResult {
   long long imagery_missing = 0, imagery_page_ins = 0, imagery_page_waits = 0;
 };
 
+// render.antialiasing with "auto" decided for a GL renderer: multisampling
+// on a GPU, the post filter on a CPU rasterizer (llvmpipe, softpipe).
+std::string resolve_antialiasing(const std::string& setting, const std::string& gl_renderer);
 // A channel's frame target as render.antialiasing asks (multisampled,
-// post-filtered or plain).
+// post-filtered or plain; "auto" resolved first).
 std::unique_ptr<gl::RenderTarget> make_frame_target(const io::RenderSpec& render, int width, int height);
 
 // The frame's work counters as log columns: totals (vs_invocations,

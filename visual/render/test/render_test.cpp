@@ -90,7 +90,7 @@ TEST(DefaultScenario, DepthBufferAgreesWithExactRayCast) {
   // Single-sampled: a multisampled frame's resolved depth is one of the
   // pixel's samples, not the depth at its centre where the ray goes.
   auto scenario = default_scenario();
-  scenario.render.msaa_samples = 1;
+  scenario.render.antialiasing = "off";
   ScenarioRunner runner(scenario, small_headless());
   runner.render_frame(0);
   auto& ch = runner.channels().front();

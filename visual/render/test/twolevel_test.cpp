@@ -188,12 +188,12 @@ SeamMetrics compare(const Frame& ref, const Frame& tl, const Square& sq) {
 }
 
 // Level0 at the paper's 2048 triangles and at the default 32768; frames
-// multisampled (4, the default) and single-sampled.
-class TwoLevelSeam : public ::testing::TestWithParam<std::tuple<int, int>> {};
+// multisampled (4 samples), post-filtered and plain.
+class TwoLevelSeam : public ::testing::TestWithParam<std::tuple<int, std::string>> {};
 
 TEST_P(TwoLevelSeam, HasNoHolesAndErrorsAreBounded) {
   constexpr int kW = 320, kH = 240, kSettle = 15;
-  const auto [budget, samples] = GetParam();
+  const auto [budget, antialiasing] = GetParam();
   // Poses of the default path (its keys, AGL) plus a low grazing view and a
   // steep look-down, all AGL.
   const Scenario base = default_scenario();
@@ -203,7 +203,7 @@ TEST_P(TwoLevelSeam, HasNoHolesAndErrorsAreBounded) {
   keys.push_back(key(0, 12000, 15000, 1500, 200, -75));  // steep look-down
   Scenario s = with_keys(base, keys, AltitudeMode::AboveGround);
   s.render.twolevel.level0_budget = budget;
-  s.render.msaa_samples = samples;
+  s.render.antialiasing = antialiasing;
   const int views = int(keys.size());
   const char* names[] = {"path t=0", "path t=5", "path t=10", "path t=15", "path t=20", "grazing", "look-down"};
 
@@ -280,8 +280,8 @@ TEST_P(TwoLevelSeam, HasNoHolesAndErrorsAreBounded) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Level0BudgetsAndSamples, TwoLevelSeam,
-                         ::testing::Values(std::make_tuple(2048, 4), std::make_tuple(32768, 4),
-                                           std::make_tuple(32768, 1)));
+                         ::testing::Values(std::make_tuple(2048, "msaa"), std::make_tuple(32768, "msaa"),
+                                           std::make_tuple(32768, "fxaa"), std::make_tuple(32768, "off")));
 
 // ------------------------------------------------------------- 2. sky only --
 
@@ -419,7 +419,7 @@ TEST(TwoLevel, Level1VerticesStayOnDemSamplesWhenTheEyeMoves) {
   // Single-sampled: the surface point of a pixel is found from its depth,
   // which must be the depth at the pixel's centre (a multisampled frame
   // resolves to one of its samples).
-  s.render.msaa_samples = 1;
+  s.render.antialiasing = "off";
   ScenarioRunner runner(s, options("twolevel", kW, kH));
   auto& tl = twolevel(runner);
   const auto& hf = runner.heightfield();
