@@ -8,6 +8,14 @@
 
 namespace ig::options {
 
+// A UTC calendar date and time of day (environment.time_utc, ISO 8601).
+struct UtcDateTime {
+  int year = 2000, month = 1, day = 1;
+  int hour = 0, minute = 0;
+  double second = 0.0;  // [0, 60)
+  bool operator==(const UtcDateTime&) const = default;
+};
+
 struct ShadingOptions {
   glm::vec3 sun_direction{-0.4f, 0.5f, 0.75f};  // towards the sun, local ENU
   glm::vec3 sky_zenith{0.22f, 0.42f, 0.78f};    // RGB in [0, 1]
