@@ -368,7 +368,7 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
     // Scale first so squaring cannot overflow, then normalise.
     for (double& c : v) c /= m;
     const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int i = 0; i < 3; ++i) r.shading.sun_direction[i] = static_cast<float>(v[i] / len);
+    r.shading.sun_direction = glm::vec3(float(v[0] / len), float(v[1] / len), float(v[2] / len));
   }
   if (j.contains("imagery")) r.imagery = get_file_path(j["imagery"], child(path, "imagery"), ctx);
   if (j.contains("frame_budget_ms")) r.frame_budget_ms = get_positive(j["frame_budget_ms"], child(path, "frame_budget_ms"), 1e6);

@@ -4,6 +4,8 @@
 // sky_horizon_rgb, fog_visibility_m; io/scenario.cpp), Modbus (the fog
 // register) and the renderer (render::TerrainScene, the sky pass).
 
+#include <optional>
+
 #include <glm/vec3.hpp>
 
 namespace ig::options {
@@ -17,7 +19,14 @@ struct UtcDateTime {
 };
 
 struct ShadingOptions {
-  glm::vec3 sun_direction{-0.4f, 0.5f, 0.75f};  // towards the sun, local ENU
+  // Used when sun_direction is not given.
+  static constexpr glm::vec3 kDefaultSunDirection{-0.4f, 0.5f, 0.75f};
+
+  // Towards the sun in terrain-local axes (x east, y grid north, z up),
+  // normalised.
+  std::optional<glm::vec3> sun_direction;
+  // The clear-day sky (sun 20 deg or more above the horizon); lower suns
+  // blend towards the dusk and night colours of environment/sky_light.h.
   glm::vec3 sky_zenith{0.22f, 0.42f, 0.78f};    // RGB in [0, 1]
   glm::vec3 sky_horizon{0.70f, 0.80f, 0.92f};   // RGB in [0, 1], also the fog colour
   double fog_visibility_m = 60000.0;            // distance where fog reaches ~98 %; 0 = off
