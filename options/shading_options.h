@@ -1,8 +1,10 @@
 #pragma once
 // How the terrain and the sky are shaded, one struct for every place that
 // sets it: the scenario file (render.sun_direction, sky_zenith_rgb,
-// sky_horizon_rgb, fog_visibility_m; io/scenario.cpp), Modbus (the fog
-// register) and the renderer (render::TerrainScene, the sky pass).
+// sky_horizon_rgb, fog_visibility_m and environment.time_utc;
+// io/scenario.cpp), Modbus (the fog register) and the renderer
+// (render::TerrainScene, the sky pass, the per-frame sun of
+// session::ScenarioRunner).
 
 #include <optional>
 
@@ -19,12 +21,16 @@ struct UtcDateTime {
 };
 
 struct ShadingOptions {
-  // Used when sun_direction is not given.
+  // Used when neither sun_direction nor time_utc is given.
   static constexpr glm::vec3 kDefaultSunDirection{-0.4f, 0.5f, 0.75f};
 
   // Towards the sun in terrain-local axes (x east, y grid north, z up),
-  // normalised.
+  // normalised. Set: used as is (it overrides time_utc).
   std::optional<glm::vec3> sun_direction;
+  // The scene's UTC time at sim time 0; the sun then follows the clock and
+  // the eye's latitude/longitude (environment/sun_position.h). Needs a
+  // georeferenced terrain (or terrain.generator.origin).
+  std::optional<UtcDateTime> time_utc;
   // The clear-day sky (sun 20 deg or more above the horizon); lower suns
   // blend towards the dusk and night colours of environment/sky_light.h.
   glm::vec3 sky_zenith{0.22f, 0.42f, 0.78f};    // RGB in [0, 1]

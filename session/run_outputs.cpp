@@ -104,6 +104,9 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         {"load_ms", runner.load_ms()}}},
       {"frame_time", stats::frame_time_summary(log_.frame_ms(), r.frame_budget_ms)},
       {"captures", captured_},
+      // At the last frame; azimuth clockwise from true north.
+      {"sun_elevation_deg", runner.sun().elevation_deg},
+      {"sun_azimuth_deg", runner.sun().azimuth_deg},
   };
   if (hf.paged) {  // issue 16: paged heights
     const auto st = hf.paged->cache->stats();
