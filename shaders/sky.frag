@@ -20,10 +20,12 @@ void main() {
   // The glow: widest in azimuth and brightest on the horizon, fading within
   // about 10 deg above it; none below it, where the haze must match the
   // terrain's fog.
-  vec2 h = dir.xy, sun_h = u_sun_dir.xy;
-  float toward = dot(h, sun_h) * inversesqrt(max(dot(h, h) * dot(sun_h, sun_h), 1e-12));
-  float glow = pow(0.5 + 0.5 * toward, 3.0) * exp(-max(el, 0.0) * 10.0) * smoothstep(-0.004, 0.004, el);
-  c += u_glow * glow;
+  if (u_glow != vec3(0.0)) {  // none by day: skip the work
+    vec2 h = dir.xy, sun_h = u_sun_dir.xy;
+    float toward = dot(h, sun_h) * inversesqrt(max(dot(h, h) * dot(sun_h, sun_h), 1e-12));
+    float glow = pow(0.5 + 0.5 * toward, 3.0) * exp(-max(el, 0.0) * 10.0) * smoothstep(-0.004, 0.004, el);
+    c += u_glow * glow;
+  }
   float sun = pow(max(dot(dir, u_sun_dir), 0.0), 400.0);
   c = mix(c, u_sun_disc, sun * step(0.0, el));
   o_color = vec4(min(c, vec3(1.0)), 0.0);  // alpha 0: not terrain (coverage marker)
