@@ -38,6 +38,15 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   heightfield_ = load_terrain(scenario_.terrain);
   load_ms_ = ms_since(t0);
   path_ = std::make_unique<io::PathInterpolator>(place_path(scenario_.path, heightfield_));
+  geolocation_ = environment::TerrainGeolocation::make(heightfield_);
+  if (r.shading.time_utc && !r.shading.sun_direction) {
+    if (!geolocation_)
+      throw io::ScenarioError((scenario_.source_path.empty() ? "" : scenario_.source_path + ": ") +
+                              "environment.time_utc: the terrain (" + heightfield_.source +
+                              ") has no georeference to place the sun; use a georeferenced DEM or "
+                              "terrain.generator.origin, or give render.sun_direction");
+    sun_tracker_.emplace(*r.shading.time_utc);
+  }
   frame_count_ = options.frames ? *options.frames : io::scenario_frame_count(scenario_);
 
   gl::ContextOptions co;
@@ -54,13 +63,6 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
   scene_->enable_height_window(scenario_.terrain.height_window);
   scene_->set_wait_for_pages(scenario_.terrain.wait_for_pages);
-  geolocation_ = environment::TerrainGeolocation::make(heightfield_);
-  if (r.shading.time_utc && !r.shading.sun_direction && !geolocation_)
-    throw io::ScenarioError((scenario_.source_path.empty() ? "" : scenario_.source_path + ": ") +
-                            "environment.time_utc: the terrain (" + heightfield_.source +
-                            ") has no georeference to place the sun; use a georeferenced DEM or "
-                            "terrain.generator.origin, or give render.sun_direction");
-  if (r.shading.time_utc && !r.shading.sun_direction) sun_tracker_.emplace(*r.shading.time_utc);
   update_sun(0.0, pose_at(0.0).position);
 
   for (const auto& spec : scenario_.channels) {
