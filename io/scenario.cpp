@@ -20,6 +20,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/utc_time.h"
+
 namespace ig::io {
 namespace {
 
@@ -369,7 +371,7 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
     // Scale first so squaring cannot overflow, then normalise.
     for (double& c : v) c /= m;
     const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int i = 0; i < 3; ++i) r.shading.sun_direction[i] = static_cast<float>(v[i] / len);
+    r.shading.sun_direction = glm::vec3(float(v[0] / len), float(v[1] / len), float(v[2] / len));
   }
   if (j.contains("imagery")) r.imagery = get_file_path(j["imagery"], child(path, "imagery"), ctx);
   if (j.contains("frame_budget_ms")) r.frame_budget_ms = get_positive(j["frame_budget_ms"], child(path, "frame_budget_ms"), 1e6);
@@ -383,6 +385,20 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   if (j.contains("msaa_samples"))
     r.msaa_samples = static_cast<int>(get_integer(j["msaa_samples"], child(path, "msaa_samples"), 2, 64));
   return r;
+}
+
+// environment: the scene's date and time (the sun follows them).
+void parse_environment(const json& j, options::ShadingOptions& shading) {
+  const std::string path = "environment";
+  require_object(j, path);
+  check_keys(j, path, {"time_utc"});
+  if (j.contains("time_utc")) {
+    const std::string p = child(path, "time_utc");
+    std::string why;
+    const auto t = parse_utc_time(get_string(j["time_utc"], p), why);
+    if (!t) fail(p, why + got(j["time_utc"]));
+    shading.time_utc = *t;
+  }
 }
 
 std::vector<ChannelSpec> parse_channels(const json& j) {
@@ -587,13 +603,14 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
     if (!root.is_object()) {
       throw ScenarioError(std::string("top level must be a JSON object (got ") + root.type_name() + ")");
     }
-    check_keys(root, "", {"name", "terrain", "render", "channels", "path", "time", "capture", "live"});
+    check_keys(root, "", {"name", "terrain", "render", "environment", "channels", "path", "time", "capture", "live"});
 
     Scenario s;
     s.name = root.contains("name") ? get_name(root["name"], "name") : default_name;
     if (!root.contains("terrain")) fail("terrain", "required key is missing");
     s.terrain = parse_terrain(root["terrain"], ctx);
     if (root.contains("render")) s.render = parse_render(root["render"], ctx);
+    if (root.contains("environment")) parse_environment(root["environment"], s.render.shading);
     if (root.contains("channels")) {
       s.channels = parse_channels(root["channels"]);
     } else {

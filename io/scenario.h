@@ -54,7 +54,8 @@ struct RenderSpec {
   double near_m = 0.5;
   double far_m = 300000.0;
   std::string method = "twolevel";
-  // fog_visibility_m, sky_zenith_rgb, sky_horizon_rgb, sun_direction
+  // fog_visibility_m, sky_zenith_rgb, sky_horizon_rgb, sun_direction, and
+  // the top-level environment.time_utc
   options::ShadingOptions shading;
   std::optional<std::string> imagery;  // optional RGB image draped over the DEM
   double frame_budget_ms = 16.667;     // frames slower than this are counted

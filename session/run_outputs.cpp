@@ -117,6 +117,9 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
       // terrain in any channel's view) and frames whose eye was underground.
       {"frames_outside_terrain", watch_.frames_outside()},
       {"frames_below_terrain", watch_.frames_below()},
+      // At the last frame; azimuth clockwise from true north.
+      {"sun_elevation_deg", runner.sun().elevation_deg},
+      {"sun_azimuth_deg", runner.sun().azimuth_deg},
   };
   if (hf.paged) {  // issue 16: paged heights
     const auto st = hf.paged->cache->stats();

@@ -38,6 +38,15 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   heightfield_ = load_terrain(scenario_.terrain);
   load_ms_ = ms_since(t0);
   path_ = std::make_unique<io::PathInterpolator>(place_path(scenario_.path, heightfield_));
+  geolocation_ = environment::TerrainGeolocation::make(heightfield_);
+  if (r.shading.time_utc && !r.shading.sun_direction) {
+    if (!geolocation_)
+      throw io::ScenarioError((scenario_.source_path.empty() ? "" : scenario_.source_path + ": ") +
+                              "environment.time_utc: the terrain (" + heightfield_.source +
+                              ") has no georeference to place the sun; use a georeferenced DEM or "
+                              "terrain.generator.origin, or give render.sun_direction");
+    sun_tracker_.emplace(*r.shading.time_utc);
+  }
   frame_count_ = options.frames ? *options.frames : io::scenario_frame_count(scenario_);
 
   gl::ContextOptions co;
@@ -55,6 +64,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   scene_->set_earth_radius(earth_radius_for(r, scenario_.terrain, heightfield_));
   scene_->enable_height_window(scenario_.terrain.height_window);
   scene_->set_wait_for_pages(scenario_.terrain.wait_for_pages);
+  update_sun(0.0, pose_at(0.0).position);
 
   for (const auto& spec : scenario_.channels) {
     ChannelView v;
@@ -113,6 +123,7 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   const render::ImageryWindowTexture* imagery = scene_->imagery_window();
   const auto imagery_before = imagery ? imagery->stats() : render::ImageryWindowTexture::Stats{};
   const auto imagery_pages_before = imagery ? imagery->cache().stats() : terrain::RgbTileCache::Stats{};
+  update_sun(sim_time_s, pose.position);
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
@@ -133,6 +144,22 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
     f.imagery_page_waits = pages_after.misses - imagery_pages_before.misses;
   }
   return f;
+}
+
+void ScenarioRunner::update_sun(double sim_time_s, const glm::dvec3& eye) {
+  const glm::dvec3 local = eye - scene_->world_origin();
+  const auto place = geolocation_ ? geolocation_->locate(glm::dvec2(local)) : std::nullopt;
+  if (!sun_tracker_) {
+    // A fixed direction in terrain-local axes: only its angles change.
+    sun_ = environment::angles_of(glm::dvec3(scene_->sky_light().sun_direction), place ? place->grid_north_deg : 0.0);
+    return;
+  }
+  if (!place) return;  // the transform failed out here: the sun stays where it was
+  const environment::SunPosition& p =
+      sun_tracker_->at(sim_time_s, {place->latitude_deg, place->longitude_deg, std::isfinite(local.z) ? local.z : 0.0});
+  sun_ = {p.elevation_deg, p.azimuth_deg};
+  scene_->set_sun_direction(
+      glm::vec3(environment::local_direction(p.azimuth_deg, p.elevation_deg, place->grid_north_deg)));
 }
 
 void ScenarioRunner::prefetch_first_window() {

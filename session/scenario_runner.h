@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "environment/sun_tracker.h"
+#include "environment/terrain_geolocation.h"
 #include "gl/gl_context.h"
 #include "gl/render_target.h"
 #include "io/path_interpolator.h"
@@ -93,6 +95,11 @@ class ScenarioRunner {
   std::vector<ChannelView>& channels() { return channels_; }
   // The shared terrain scene (shading parameters, e.g. fog, set at run time).
   render::TerrainScene& scene() { return *scene_; }
+  // The sun of the last frame (before the first: at the first pose):
+  // elevation and azimuth clockwise from true north. With
+  // environment.time_utc it follows the clock and the eye's place; otherwise
+  // it is render.sun_direction (or the default sun) as angles.
+  const environment::SunAngles& sun() const { return sun_; }
 
   // Renders frame k (sim time k * step, pose from the scenario's path) for
   // every channel into its target.
@@ -128,6 +135,13 @@ class ScenarioRunner {
   std::unique_ptr<render::TerrainScene> scene_;
   std::vector<ChannelView> channels_;
   int frame_count_ = 0;
+  // Where the eye is on the Earth (null without a georeference).
+  std::unique_ptr<environment::TerrainGeolocation> geolocation_;
+  std::optional<environment::SunTracker> sun_tracker_;  // with environment.time_utc only
+  environment::SunAngles sun_;
+  // Moves the scene's sun to sim time t at the eye (environment.time_utc),
+  // or, without a time, only works out its angles.
+  void update_sun(double sim_time_s, const glm::dvec3& eye);
 };
 
 }  // namespace ig::session

@@ -21,7 +21,9 @@ uniform vec2 u_imagery_overview_scale;  // footprint / overview span (whole step
 uniform ivec2 u_dem_size;
 uniform vec2 u_spacing;
 uniform vec2 u_height_range;    // DEM min, max (m)
-uniform vec3 u_sun_dir;         // towards the sun, normalised
+uniform vec3 u_sun_dir;         // towards the directional light (the sun, or the twilight sky), normalised
+uniform vec3 u_light_color;     // its RGB; with u_ambient from the sun's elevation (environment/sky_light.h)
+uniform vec3 u_ambient;         // light from the whole sky, RGB
 // Ground detail (render/terrain_scene.cpp, terrain/detail_noise.h): a
 // tileable noise texture (r fine grain, g clumps, b patches, a broad swells),
 // mipmapped, fixed to the terrain at three tile sizes. A tile's coordinate is
@@ -150,7 +152,7 @@ vec3 shade(vec2 s, float dist) {
     albedo = ground_albedo(s, h01, clamp(slope * 3.0, 0.0, 1.0), grain);
   }
   float diffuse = max(dot(n, u_sun_dir), 0.0);
-  vec3 color = albedo * (0.25 + 0.85 * diffuse);
+  vec3 color = albedo * (u_ambient + u_light_color * diffuse);
   float fog = 1.0 - exp(-(u_fog_k * dist) * (u_fog_k * dist));
   return mix(color, u_fog_color, fog);
 }

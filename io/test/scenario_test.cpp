@@ -108,9 +108,10 @@ TEST(Scenario, FullDocumentEveryField) {
   EXPECT_FLOAT_EQ(s.render.shading.sky_horizon[1], 0.5f);
   EXPECT_FLOAT_EQ(s.render.shading.sky_horizon[2], 0.6f);
   // Normalised.
-  EXPECT_FLOAT_EQ(s.render.shading.sun_direction[0], 0.0f);
-  EXPECT_FLOAT_EQ(s.render.shading.sun_direction[1], 0.6f);
-  EXPECT_FLOAT_EQ(s.render.shading.sun_direction[2], 0.8f);
+  ASSERT_TRUE(s.render.shading.sun_direction.has_value());
+  EXPECT_FLOAT_EQ(s.render.shading.sun_direction->x, 0.0f);
+  EXPECT_FLOAT_EQ(s.render.shading.sun_direction->y, 0.6f);
+  EXPECT_FLOAT_EQ(s.render.shading.sun_direction->z, 0.8f);
   ASSERT_TRUE(s.render.imagery.has_value());
   EXPECT_EQ(*s.render.imagery, "/data/ortho.png");
   EXPECT_DOUBLE_EQ(s.render.frame_budget_ms, 8.333);

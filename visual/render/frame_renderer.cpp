@@ -79,12 +79,14 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   r.timings.terrain_ms = ms_since(t0);
 
   t0 = Clock::now();
-  const auto& s = scene_.shading();
+  const environment::SkyLight& sky = scene_.sky_light();
   sky_.use();
   sky_.set("u_inv_view_proj", glm::inverse(camera.view_projection()));
-  sky_.set("u_zenith", s.sky_zenith);
-  sky_.set("u_horizon", s.sky_horizon);
-  sky_.set("u_sun_dir", s.sun_direction);
+  sky_.set("u_zenith", sky.sky_zenith);
+  sky_.set("u_horizon", sky.sky_horizon);
+  sky_.set("u_sun_dir", sky.sun_direction);
+  sky_.set("u_glow", sky.horizon_glow);
+  sky_.set("u_sun_disc", sky.sun_disc);
   glDisable(GL_CULL_FACE);
   glDepthFunc(GL_GEQUAL);  // only where the depth buffer still holds the clear value
   glDepthMask(GL_FALSE);

@@ -42,7 +42,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
                                 " samples: a terrain needs at least 2 x 2 samples to form a surface");
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  shading_.sun_direction = glm::normalize(shading_.sun_direction);
+  set_sun_direction(shading_.sun_direction.value_or(ShadingParams::kDefaultSunDirection));
 
   const auto t0 = std::chrono::steady_clock::now();
   const int limit = texture_limit > 0 ? std::min(texture_limit, int(max_size)) : int(max_size);
@@ -165,7 +165,9 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   p.set("u_dem_size", glm::ivec2(heightfield_.width, heightfield_.height));
   p.set("u_spacing", glm::vec2(float(heightfield_.spacing_x_m), float(heightfield_.spacing_y_m)));
   p.set("u_height_range", glm::vec2(heightfield_.min_m, heightfield_.max_m));
-  p.set("u_sun_dir", shading_.sun_direction);
+  p.set("u_sun_dir", sky_light_.light_direction);
+  p.set("u_light_color", sky_light_.light_colour);
+  p.set("u_ambient", sky_light_.ambient);
   // Ground detail on unit 7: the tiles' phase at a whole sample near the eye,
   // in double (a float product of a large sample index would lose it).
   const bool detail = shading_.ground_detail && detail_tex_;
@@ -183,13 +185,17 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
       p.set(kPhaseNames[k], glm::vec2(terrain::detail_tile_phase(anchor, spacing, kDetailTileM[k])));
     }
   }
-  p.set("u_fog_color", shading_.sky_horizon);
+  p.set("u_fog_color", sky_light_.sky_horizon);
   // Fog reaches 98 % at the visibility distance: exp(-(k V)^2) = 0.02.
   const double k = shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;
   p.set("u_fog_k", float(k));
   p.set("u_view_proj", camera.view_projection());
   p.set("u_earth_radius_m", float(camera.earth_radius_m));
   p.set("u_alpha", 1.0f);
+}
+
+void TerrainScene::set_sun_direction(const glm::vec3& towards_sun) {
+  sky_light_ = environment::sky_light_for(towards_sun, shading_);
 }
 
 void TerrainScene::enable_height_window(int size) {

@@ -28,6 +28,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "environment/sky_light.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "options/shading_options.h"
@@ -75,6 +76,12 @@ class TerrainScene {
   void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
   // Ground detail on or off from the next bind_common (its texture made on first use).
   void set_ground_detail(bool on);
+  // The light and sky (environment/sky_light.h) every terrain program and the
+  // sky pass draw with: from shading().sun_direction (or the default sun)
+  // until set_sun_direction moves the sun (the per-frame sun of a scenario's
+  // time_utc); used from the next bind_common.
+  const environment::SkyLight& sky_light() const { return sky_light_; }
+  void set_sun_direction(const glm::vec3& towards_sun);
   GLuint height_texture() const { return height_tex_.id(); }
   // DEM samples per height-texture sample: 1 when the texture is the whole
   // DEM, > 1 when it is an overview (the DEM exceeds the texture limit).
@@ -168,6 +175,7 @@ class TerrainScene {
  private:
   const terrain::Heightfield& heightfield_;
   ShadingParams shading_;
+  environment::SkyLight sky_light_;
   gl::Texture height_tex_;
   int overview_step_ = 1;
   int texture_limit_ = 0;
