@@ -161,14 +161,14 @@ VoidFillResult fill_voids(std::vector<float>& h, const std::vector<std::uint8_t>
     if (!valid[k]) h[k] = kLeft;
   if (std::size_t(result.voids) < n) {
     // GDAL searches every masked sample up to max_distance columns each
-    // way, so a large void costs it dearly, deep or not (a missing tile of
-    // a mosaic: 4.2 M voids, 9 s). Void samples more than
-    // 2 * max_distance + smoothing + 1 steps from every valid sample are
-    // handed over as valid NaNs instead: no sample GDAL can fill (within
-    // max_distance of valid data), nor one a smoothing pass reads for it
-    // (within smoothing of those), lies within max_distance of them, so
-    // they are never its candidates, and the samples that do find them
-    // are deep ones, which come out NaN as they would have anyway.
+    // way until it has a candidate in all four quadrants, so the middle of
+    // a large void costs it the most and gives nothing. Void samples more
+    // than 2 * max_distance + smoothing + 1 steps from every valid sample
+    // are handed over as valid NaNs instead: no sample GDAL can fill
+    // (within max_distance of valid data), nor one a smoothing pass reads
+    // for it (within smoothing of those), lies within max_distance of
+    // them, so they are never its candidates, and the samples that do find
+    // them are deep ones, which come out NaN as they would have anyway.
     const int far = 2 * opts.max_distance + opts.smoothing_iterations + 1;
     const std::vector<std::uint16_t> steps = steps_to_valid(valid, w, ht, std::uint16_t(far + 1));
     std::vector<std::uint8_t> mask(n);  // north first, as the file
