@@ -257,11 +257,24 @@ GeneratorSpec parse_generator(const json& j, const std::string& path) {
   return g;
 }
 
+options::VoidFillOptions parse_void_fill(const json& j, const std::string& path) {
+  require_object(j, path);
+  check_keys(j, path, {"max_distance", "smoothing_iterations"});
+  options::VoidFillOptions f;
+  if (j.contains("max_distance"))
+    f.max_distance = static_cast<int>(
+        get_integer(j["max_distance"], child(path, "max_distance"), 1, options::VoidFillOptions::kMaxVoidSearch));
+  if (j.contains("smoothing_iterations"))
+    f.smoothing_iterations = static_cast<int>(get_integer(j["smoothing_iterations"], child(path, "smoothing_iterations"),
+                                                          0, options::VoidFillOptions::kMaxVoidSmoothing));
+  return f;
+}
+
 TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   const std::string path = "terrain";
   require_object(j, path);
   check_keys(j, path, {"file", "encoding", "scale", "offset", "spacing_m", "generator", "height_window", "texture_limit",
-                     "memory_budget_mb", "imagery_budget_mb", "wait_for_pages", "vertical_datum"});
+                     "memory_budget_mb", "imagery_budget_mb", "wait_for_pages", "vertical_datum", "void_fill"});
   const bool has_file = j.contains("file");
   const bool has_gen = j.contains("generator");
   if (has_file && has_gen) fail(path, "exactly one of \"file\" or \"generator\" may be given, not both");
@@ -282,7 +295,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
     t.imagery_budget_mb =
         static_cast<int>(get_integer(j["imagery_budget_mb"], child(path, "imagery_budget_mb"), 1, 1 << 20));
   if (has_gen) {
-    for (const char* k : {"encoding", "scale", "offset", "spacing_m", "vertical_datum"}) {
+    for (const char* k : {"encoding", "scale", "offset", "spacing_m", "vertical_datum", "void_fill"}) {
       if (j.contains(k)) {
         fail(child(path, k), "only allowed with terrain.file (generator settings go in terrain.generator)");
       }
@@ -299,6 +312,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   }
   if (j.contains("offset")) t.offset = get_number_in(j["offset"], child(path, "offset"), -1e6, 1e6);
   if (j.contains("spacing_m")) t.spacing_m = get_positive(j["spacing_m"], child(path, "spacing_m"), 1e5);
+  if (j.contains("void_fill")) t.void_fill = parse_void_fill(j["void_fill"], child(path, "void_fill"));
   return t;
 }
 

@@ -10,6 +10,24 @@
 
 namespace ig::options {
 
+// How nodata samples (voids) are filled at load (terrain.void_fill): GDAL's
+// GDALFillNodata, the engine of `gdal_fillnodata.py -md max_distance -si
+// smoothing_iterations` (terrain/void_fill.h, docs/terrain-data.md "Nodata").
+struct VoidFillOptions {
+  // How far (samples) the fill looks for valid samples in each direction,
+  // 1 ... kMaxVoidSearch. Voids farther than this from any valid sample are
+  // "deep": GDAL leaves them and they are filled layer by layer from the
+  // filled samples around them.
+  int max_distance = 400;
+  // 3x3 mean passes over the filled samples after the interpolation, which
+  // soften its straight-line artefacts, 0 ... kMaxVoidSmoothing.
+  int smoothing_iterations = 2;
+  // Limits: a paged tile with voids is read with a halo of up to
+  // max_distance + smoothing_iterations + 257 samples (terrain/gdal_tile_reader.h).
+  static constexpr int kMaxVoidSearch = 1024;
+  static constexpr int kMaxVoidSmoothing = 32;
+};
+
 // How a DEM file is read (terrain.encoding, scale, offset, spacing_m).
 struct DemLoadOptions {
   // "auto": PNG files (by signature) go to png16 (1-channel 16-bit) or
@@ -33,6 +51,8 @@ struct DemLoadOptions {
   // "ellipsoid" (WGS 84: converted to above the geoid at load,
   // terrain/geoid_correction.h).
   std::string vertical_datum = "geoid";
+  // GDAL DEMs' voids (terrain.void_fill).
+  VoidFillOptions void_fill;
 };
 
 // The fractal terrain generator (terrain.generator).

@@ -8,8 +8,9 @@
 #   IG           path of the ig executable
 #   ARGS         arguments after `ig info`, separated by "|"
 #   EXPECT_RC    expected exit code
-#   EXPECT_JSON  "|"-separated checks on top-level members: key=value (exact
-#                text; booleans read ON/OFF), key=null, key=LO..HI (numeric)
+#   EXPECT_JSON  "|"-separated checks on members: key=value (exact text;
+#                booleans read ON/OFF), key=null, key=LO..HI (numeric); a
+#                nested member is named by its path, outer.inner=value
 #   EXPECT_ERR   regex the single stderr line must match (error cases)
 #   EXPECT_OUT   regex stdout must match (non-JSON output, e.g. --help)
 
@@ -45,16 +46,17 @@ if(CMAKE_SCRIPT_MODE_FILE)
     endif()
     string(REPLACE "|" ";" _checks "${EXPECT_JSON}")
     foreach(_check IN LISTS _checks)
-      if(NOT _check MATCHES "^([a-z_]+)=(.*)$")
+      if(NOT _check MATCHES "^([a-z_.]+)=(.*)$")
         message(FATAL_ERROR "bad check '${_check}'")
       endif()
       set(_key "${CMAKE_MATCH_1}")
       set(_want "${CMAKE_MATCH_2}")
-      string(JSON _t ERROR_VARIABLE _jerr TYPE "${_json}" "${_key}")
+      string(REPLACE "." ";" _member_path "${_key}")
+      string(JSON _t ERROR_VARIABLE _jerr TYPE "${_json}" ${_member_path})
       if(_jerr)
         message(FATAL_ERROR "JSON has no member '${_key}'")
       endif()
-      string(JSON _v GET "${_json}" "${_key}")
+      string(JSON _v GET "${_json}" ${_member_path})
       if(_want STREQUAL "null")
         if(NOT _t STREQUAL "NULL")
           message(FATAL_ERROR "${_key} is ${_t} '${_v}', expected null")
@@ -114,6 +116,15 @@ ig_info_test(ascii_grid "${D}/tiny.asc" 0
   JSON "width=4|height=3|nodata_count=1|min_m=1|max_m=12|spacing_x_m=10|spacing_y_m=10|crs=null|geographic=OFF|source=${D}/tiny.asc")
 ig_info_test(spacing_override "${D}/tiny.asc|--spacing|2.5" 0
   JSON "spacing_x_m=2.5|spacing_y_m=2.5")
+# How voids are filled: GDAL's GDALFillNodata with its settings (terrain/void_fill.h).
+ig_info_test(void_fill_defaults "${D}/tiny.asc" 0
+  JSON "nodata_count=1|void_fill.algorithm=GDALFillNodata|void_fill.max_distance=400|void_fill.smoothing_iterations=2|void_fill.deep_count=0|void_fill.deep_fill=layers")
+ig_info_test(void_fill_options "${D}/tiny.asc|--fill-max-distance|3|--fill-smoothing|0" 0
+  JSON "void_fill.max_distance=3|void_fill.smoothing_iterations=0|void_fill.deep_count=0")
+ig_info_test(usage_bad_fill_distance "${D}/tiny.asc|--fill-max-distance|0" 2
+  ERR "--fill-max-distance must be an integer in 1\\.\\.1024, got '0'")
+ig_info_test(usage_bad_fill_smoothing "${D}/tiny.asc|--fill-smoothing|2.5" 2
+  ERR "--fill-smoothing must be an integer in 0\\.\\.32")
 ig_info_test(help "--help" 0 OUT "usage: ig info FILE")
 ig_info_test(missing_file "${D}/missing.tif" 1 ERR "missing\\.tif: no such file")
 ig_info_test(empty_file "${D}/empty.tif" 1 ERR "empty\\.tif: empty file \\(0 bytes\\)")
@@ -143,7 +154,10 @@ if(DEFINED ENV{IG_DEM_DIR} AND NOT "$ENV{IG_DEM_DIR}" STREQUAL "")
   ig_info_test(real_rainier "${R}/mt_rainier_90m.tif" 0
     JSON "width=1201|height=1201|min_m=263|max_m=4371|spacing_x_m=63..64.7|crs=EPSG:4326")
   ig_info_test(real_everest "${R}/mt_everest_90m.tif" 0
-    JSON "width=1201|height=1201|min_m=192|max_m=8642|spacing_x_m=81.5..83|crs=EPSG:4326")
+    JSON "width=1201|height=1201|min_m=192|max_m=8642|spacing_x_m=81.5..83|crs=EPSG:4326|nodata_count=130953|void_fill.deep_count=0")
+  # A short search leaves the summit void's middle deep (filled by layers, counted).
+  ig_info_test(real_everest_deep_voids "${R}/mt_everest_90m.tif|--fill-max-distance|4" 0
+    JSON "nodata_count=130953|void_fill.max_distance=4|void_fill.deep_count=1..130952|max_m=8642")
   ig_info_test(real_fuji_tif "${R}/mt_fuji_90m.tif" 0
     JSON "width=1201|height=1201|min_m=-16|max_m=3742|spacing_x_m=75..76.2|crs=EPSG:4326")
   ig_info_test(real_qgis_dem25 "${R}/qgis_dem25_bejar_spain.tif" 0

@@ -23,11 +23,13 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: ig info FILE|FOLDER [--encoding auto|terrain-rgb|png16|gdal] [--scale S] [--offset O]\n"
-    "                    [--spacing M]\n"
+    "                    [--spacing M] [--fill-max-distance N] [--fill-smoothing N]\n"
     "Loads a DEM (GeoTIFF, SRTM .hgt, USGS DEM, ESRI ASCII grid, any single-band GDAL\n"
     "raster or VRT, 16-bit PNG or terrain-RGB PNG; a FOLDER is a mosaic of the DEM tiles\n"
     "in it) and prints one JSON object: size, spacing in metres, min/max/mean height,\n"
-    "filled nodata samples, CRS, corner coordinates, and for a folder the tile counts.\n"
+    "filled nodata samples (nodata_count) and how they were filled (void_fill: GDAL's\n"
+    "GDALFillNodata, its settings, deep_count = voids beyond its search distance),\n"
+    "CRS, corner coordinates, and for a folder the tile counts.\n"
     "Exit status: 0 ok, 1 the file could not be loaded, 2 bad arguments.\n";
 
 double parse_number(const std::string& option, const std::string& text) {
@@ -73,7 +75,7 @@ class SilenceStderr {
 std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOptions& opts) {
   CLI::App app("ig info");
   std::vector<std::string> files;
-  std::optional<std::string> encoding, scale, offset, spacing;
+  std::optional<std::string> encoding, scale, offset, spacing, fill_distance, fill_smoothing;
   app.add_option("file", files, "the DEM file, or a folder of DEM tiles read as one mosaic")->option_text("FILE|FOLDER");
   app.add_option("--encoding", encoding,
                  "how to decode: auto (default; PNGs by their layout, else GDAL), png16 (metres = value * scale "
@@ -82,6 +84,13 @@ std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOpt
   app.add_option("--scale", scale, "png16: metres per count (default 1)")->option_text("S");
   app.add_option("--offset", offset, "png16: metres added after scaling (default 0)")->option_text("O");
   app.add_option("--spacing", spacing, "sample spacing in metres (images carry none: default 1)")->option_text("M");
+  app.add_option("--fill-max-distance", fill_distance,
+                 "how far (samples, 1..1024) the void fill searches for valid samples (gdal_fillnodata.py -md; "
+                 "default 400)")
+      ->option_text("N");
+  app.add_option("--fill-smoothing", fill_smoothing,
+                 "smoothing passes over filled samples, 0..32 (gdal_fillnodata.py -si; default 2)")
+      ->option_text("N");
   try {
     parse_command_line(app, args);
   } catch (const UsageError& e) {
@@ -100,6 +109,20 @@ std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOpt
     if (!(s > 0)) throw UsageError("--spacing must be a positive number of metres");
     opts.spacing_m = s;
   }
+  // An integer within limits, else a usage error naming the option.
+  auto whole_number = [](const std::string& option, const std::string& text, int lo, int hi) {
+    const double v = parse_number(option, text);
+    if (v != std::floor(v) || v < lo || v > hi)
+      throw UsageError(option + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                       ", got '" + text + "'");
+    return int(v);
+  };
+  using VoidFill = options::VoidFillOptions;
+  if (fill_distance)
+    opts.void_fill.max_distance = whole_number("--fill-max-distance", *fill_distance, 1, VoidFill::kMaxVoidSearch);
+  if (fill_smoothing)
+    opts.void_fill.smoothing_iterations =
+        whole_number("--fill-smoothing", *fill_smoothing, 0, VoidFill::kMaxVoidSmoothing);
   if (files.size() > 1) throw UsageError("more than one FILE given ('" + files[0] + "', '" + files[1] + "')");
   if (files.empty()) throw UsageError("missing FILE (usage: ig info FILE [options]; see --help)");
   return files[0];

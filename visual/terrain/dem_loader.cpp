@@ -130,7 +130,7 @@ std::string crs_short_name(OGRSpatialReferenceH srs) {
 // The heights read whole (they fit the memory budget): one RasterIO, flip,
 // decode, void fill over the whole grid.
 void read_whole_heights(Heightfield& hf, GDALRasterBandH band, const std::string& path, int w, int ht,
-                        const SampleDecoding& dec) {
+                        const SampleDecoding& dec, const VoidFillOptions& void_fill) {
   hf.width = w;
   hf.height = ht;
   hf.source = path;
@@ -171,7 +171,17 @@ void read_whole_heights(Heightfield& hf, GDALRasterBandH band, const std::string
       if (state.empty() || state[k]) hf.heights[k] = float((hf.heights[k] * dec.scale + dec.offset) * dec.unit_m);
   }
   if (dec.geoid) dec.geoid->to_orthometric(0, 0, w, ht, hf.heights.data(), state.empty() ? nullptr : state.data());
-  hf.nodata_count = state.empty() ? 0 : fill_voids(hf.heights, state, w, ht);
+  hf.void_fill = void_fill;
+  if (state.empty()) return;
+  try {
+    const VoidFillResult filled = fill_voids(hf.heights, state, w, ht, void_fill);
+    hf.nodata_count = filled.voids;
+    hf.deep_void_count = filled.deep;
+  } catch (const std::bad_alloc&) {
+    throw DemError(path, "out of memory filling the voids of a " + size_text(w, ht) + " grid");
+  } catch (const std::exception& e) {
+    throw DemError(path, e.what());
+  }
 }
 
 Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
@@ -248,12 +258,12 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
     // GDAL's block cache (5 % of RAM by default) would sit beside the tile cache.
     if (GDALGetCacheMax64() > (GIntBig(256) << 20)) GDALSetCacheMax64(GIntBig(256) << 20);
     try {
-      hf = load_paged_heights(path, dec, budget, opts.page_tile);
+      hf = load_paged_heights(path, dec, opts.void_fill, budget, opts.page_tile);
     } catch (const std::exception& e) {
       throw DemError(path, without_path(e.what(), path));
     }
   } else {
-    read_whole_heights(hf, band, path, w, ht, dec);
+    read_whole_heights(hf, band, path, w, ht, dec, opts.void_fill);
   }
 
   // Georeferencing and spacing.
@@ -438,6 +448,14 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
     throw DemError(path, "scale and offset must be finite numbers");
   if (opts.spacing_m && !(*opts.spacing_m > 0 && std::isfinite(*opts.spacing_m)))
     throw DemError(path, "spacing must be a positive number of metres");
+  const VoidFillOptions& fill = opts.void_fill;
+  if (fill.max_distance < 1 || fill.max_distance > VoidFillOptions::kMaxVoidSearch)
+    throw DemError(path, "void_fill max_distance must be 1.." + std::to_string(VoidFillOptions::kMaxVoidSearch) +
+                             " samples (got " + std::to_string(fill.max_distance) + ")");
+  if (fill.smoothing_iterations < 0 || fill.smoothing_iterations > VoidFillOptions::kMaxVoidSmoothing)
+    throw DemError(path, "void_fill smoothing_iterations must be 0.." +
+                             std::to_string(VoidFillOptions::kMaxVoidSmoothing) + " (got " +
+                             std::to_string(fill.smoothing_iterations) + ")");
 
   // File-system checks first, so the common mistakes read plainly.
   std::error_code ec;
@@ -502,6 +520,13 @@ std::string dem_info_json(const Heightfield& hf) {
   o["max_m"] = json_number(hf.max_m);
   o["mean_m"] = json_number(hf.mean_m);
   o["nodata_count"] = hf.nodata_count;
+  if (hf.void_fill) {  // GDAL loads: how the voids were (or would be) filled
+    o["void_fill"] = {{"algorithm", "GDALFillNodata"},
+                      {"max_distance", hf.void_fill->max_distance},
+                      {"smoothing_iterations", hf.void_fill->smoothing_iterations},
+                      {"deep_count", hf.deep_void_count},
+                      {"deep_fill", "layers"}};
+  }
   o["crs"] = nullptr;
   if (hf.georef && !hf.georef->crs_name.empty()) o["crs"] = hf.georef->crs_name;
   o["geographic"] = hf.georef && hf.georef->geographic;

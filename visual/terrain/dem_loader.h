@@ -43,14 +43,18 @@ using DemLoadOptions = options::DemLoadOptions;  // options/terrain_options.h
 //
 // Nodata: a sample is void when it equals the band's nodata value, is NaN or
 // +-Inf, or is -32768 (the SRTM void marker; no real elevation is that low).
-// Voids are filled inward from their edges, layer by layer: each void sample
-// takes the mean of the already-valid samples among its 8 neighbours. The
-// number of filled samples is Heightfield::nodata_count. A grid with no valid
-// sample at all is an error.
+// Voids are filled as GDAL's gdal_fillnodata.py fills them (GDALFillNodata
+// with opts.void_fill: inverse-distance interpolation from the nearest valid
+// samples, then smoothing passes); deep voids beyond its search distance
+// layer by layer from the filled rim (terrain/void_fill.h). The number of
+// filled samples is Heightfield::nodata_count, the deep ones
+// deep_void_count. A grid with no valid sample at all is an error.
 Heightfield load_dem(const std::string& path, const DemLoadOptions& opts = {});
 
 // One JSON object (single line) describing a loaded heightfield: width,
-// height, spacing_x_m, spacing_y_m, min_m, max_m, mean_m, nodata_count, crs
+// height, spacing_x_m, spacing_y_m, min_m, max_m, mean_m, nodata_count,
+// for GDAL loads "void_fill" ({"algorithm": "GDALFillNodata", "max_distance",
+// "smoothing_iterations", "deep_count", "deep_fill": "layers"}), crs
 // (short name or null), geographic, source, and for georeferenced grids
 // "corners" ({"sw","se","nw","ne"}: [x, y] CRS coordinates of the corner
 // sample centres) and "bounds" (outer pixel edges: west, south, east, north);

@@ -5,15 +5,18 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "terrain/void_fill.h"
+#include "terrain/void_fill_halo.h"
 
 namespace ig::terrain {
 
 bool SampleDecoding::valid(float v) const { return std::isfinite(v) && v != -32768.0f && v != nodata; }
 
-GdalTileReader::GdalTileReader(const std::string& path, SampleDecoding decoding) : path_(path), dec_(decoding) {
+GdalTileReader::GdalTileReader(const std::string& path, SampleDecoding decoding, VoidFillOptions void_fill)
+    : path_(path), dec_(std::move(decoding)), fill_(void_fill) {
   gdal::register_once();
   gdal::QuietErrors quiet;
   ds_.reset(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
@@ -60,29 +63,46 @@ TileVoids GdalTileReader::read(int x0, int y0, int w, int h, float* out) {
     std::copy(buf.begin(), buf.end(), out);
     return voids;
   }
-  std::vector<std::int32_t> layers;
-  for (int halo = kVoidHalo;;) {
+  const int gdal_reach = full_fill_halo(fill_);
+  std::vector<std::int32_t> deep_layers;
+  for (int halo = std::min(gdal_reach, std::max(kFirstVoidHalo, fill_.smoothing_iterations + 6));;) {
     const int wx0 = std::max(0, x0 - halo), wy0 = std::max(0, y0 - halo);
     const int ww = std::min(width_, x0 + w + halo) - wx0, wh = std::min(height_, y0 + h + halo) - wy0;
     read_decoded(wx0, wy0, ww, wh, buf, state);
-    fill_voids(buf, state, ww, wh, &layers);
+    // The whole DEM in the window: the whole load's fill itself.
+    const bool whole = ww == width_ && wh == height_;
+    if (!whole) {
+      const FillWindow window{ww, wh, x0 - wx0, y0 - wy0, w, h, wx0 + ww == width_};
+      const int need = exact_fill_halo(state, window, fill_);
+      if (need > halo) {
+        halo = need;
+        continue;
+      }
+    }
+    fill_voids(buf, state, ww, wh, fill_, &deep_layers);
     auto window_index = [&](int r, int c) { return std::size_t(y0 - wy0 + r) * ww + std::size_t(x0 - wx0 + c); };
     std::int32_t deepest = 0;
     for (int r = 0; r < h; ++r)
-      for (int c = 0; c < w; ++c) deepest = std::max(deepest, layers[window_index(r, c)]);
-    // The whole DEM in the window: the whole load's fill itself.
-    const bool whole = ww == width_ && wh == height_;
-    if (deepest <= halo || whole || halo >= kMaxVoidHalo) {
-      for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) {
-          const std::size_t k = window_index(r, c);
-          const bool unfilled = layers[k] == kUnfilledLayer;  // no valid sample in the window
-          out[std::size_t(r) * w + c] = unfilled ? 0.0f : buf[k];
-          voids.inexact += !whole && layers[k] > halo;
-        }
-      return voids;
+      for (int c = 0; c < w; ++c) deepest = std::max(deepest, deep_layers[window_index(r, c)]);
+    // A deep sample of layer d reads the GDAL-filled samples d around it,
+    // and those read GDAL's reach around them.
+    const int most = gdal_reach + kMaxExactDeepLayer;
+    if (!whole && deepest > 0 && halo < most) {
+      const int need = deepest == kUnfilledLayer ? most : std::min(most, gdal_reach + int(deepest));
+      if (need > halo) {
+        halo = need;
+        continue;
+      }
     }
-    halo = std::min(kMaxVoidHalo, deepest == kUnfilledLayer ? 4 * halo : int(deepest));
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) {
+        const std::size_t k = window_index(r, c);
+        const std::int32_t layer = deep_layers[k];
+        out[std::size_t(r) * w + c] = layer == kUnfilledLayer ? 0.0f : buf[k];  // no valid sample in the window
+        voids.deep += layer > 0;
+        voids.inexact += !whole && layer > 0 && layer > halo - gdal_reach;
+      }
+    return voids;
   }
 }
 

@@ -7,15 +7,16 @@
 // dataset handle; not thread-safe (the tile cache calls it on one thread at
 // a time). Internal to ig_terrain.
 //
-// Voids are filled as the whole-array load fills them, exactly for all but
-// the deepest: a rectangle with voids is read again with a halo around it
-// (kVoidHalo samples, clipped to the DEM), filled (terrain/void_fill.h),
-// then cropped. A void sample whose layer (distance to the nearest valid
-// sample) is at most the halo then gets the whole load's value, bit for bit.
-// When a deeper one is in the rectangle the halo grows to its layer, up to
-// kMaxVoidHalo; the samples still deeper than that may differ from the
-// whole load and are counted (TileVoids::inexact; a window with no valid
-// sample at all becomes 0 m). Void-free rectangles are read once, as is.
+// Voids are filled as the whole-array load fills them (terrain/void_fill.h),
+// bit for bit for all but the deepest: a rectangle with voids is read again
+// with a halo around it (clipped to the DEM), filled, then cropped. The
+// halo is what makes GDAL's values exact there (terrain/void_fill_halo.h):
+// a few samples for small voids, max_distance + 1 + smoothing_iterations
+// for large ones. Deep voids (beyond GDAL's reach, filled by layers) need
+// their layer more, up to kMaxExactDeepLayer; the samples deeper than that
+// may differ from the whole load and are counted (TileVoids::inexact; a
+// window with no valid sample at all becomes 0 m). Void-free rectangles are
+// read once, as is.
 
 #include <cstdint>
 #include <memory>
@@ -24,17 +25,20 @@
 
 #include "terrain/gdal_support.h"
 #include "terrain/geoid_correction.h"
+#include "terrain/void_fill.h"
 
 namespace ig::terrain {
 
-// The halo a rectangle with voids is read with, and the most it grows to.
-constexpr int kVoidHalo = 32;
-constexpr int kMaxVoidHalo = 256;
+// The halo a rectangle with voids is first read with (grown as it needs).
+constexpr int kFirstVoidHalo = 32;
+// Deep voids up to this many layers inside GDAL's reach fill exactly.
+constexpr int kMaxExactDeepLayer = 256;
 
 // What one read() filled.
 struct TileVoids {
   std::int64_t filled = 0;   // void samples in the rectangle
-  std::int64_t inexact = 0;  // of those, deeper than the halo used: may differ from the whole load
+  std::int64_t deep = 0;     // of those, beyond GDAL's search distance (filled by layers)
+  std::int64_t inexact = 0;  // of those, deeper than kMaxExactDeepLayer: may differ from the whole load
 };
 
 struct SampleDecoding {
@@ -49,7 +53,7 @@ struct SampleDecoding {
 class GdalTileReader {
  public:
   // Opens `path` (throws std::runtime_error naming it on failure).
-  GdalTileReader(const std::string& path, SampleDecoding decoding);
+  GdalTileReader(const std::string& path, SampleDecoding decoding, VoidFillOptions void_fill);
   int width() const { return width_; }
   int height() const { return height_; }
   // Samples [x0, x0 + w) x [y0, y0 + h) (row y0 = south) into out (w * h,
@@ -66,6 +70,7 @@ class GdalTileReader {
   GDALRasterBandH band_ = nullptr;
   int width_ = 0, height_ = 0;
   SampleDecoding dec_;
+  VoidFillOptions fill_;
 };
 
 }  // namespace ig::terrain

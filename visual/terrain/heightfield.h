@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "options/terrain_options.h"
+
 namespace ig::terrain {
 
 struct PagedHeights;  // terrain/paged_heights.h
@@ -45,6 +47,10 @@ struct Heightfield {
   float max_m = 0.0f;
   double mean_m = 0.0;
   std::int64_t nodata_count = 0;  // samples that were nodata in the file and got filled
+  // GDAL loads: how the voids were filled (terrain/void_fill.h), and how
+  // many were deep (no valid sample within its search distance).
+  std::optional<options::VoidFillOptions> void_fill;
+  std::int64_t deep_void_count = 0;
 
   std::optional<GeoReference> georef;
   std::string source;  // file path, folder of tiles or generator description, for logs

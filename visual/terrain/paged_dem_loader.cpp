@@ -12,9 +12,9 @@
 
 namespace ig::terrain {
 
-Heightfield load_paged_heights(const std::string& path, const SampleDecoding& decoding, std::size_t budget_bytes,
-                               int tile) {
-  auto reader = std::make_shared<GdalTileReader>(path, decoding);
+Heightfield load_paged_heights(const std::string& path, const SampleDecoding& decoding,
+                               const VoidFillOptions& void_fill, std::size_t budget_bytes, int tile) {
+  auto reader = std::make_shared<GdalTileReader>(path, decoding, void_fill);
   const int w = reader->width(), ht = reader->height();
   tile = std::max(tile, 4);
 
@@ -40,7 +40,7 @@ Heightfield load_paged_heights(const std::string& path, const SampleDecoding& de
 
   float lo = inf, hi = -inf;
   double sum = 0.0;
-  std::int64_t voids = 0, inexact = 0;
+  std::int64_t voids = 0, deep = 0, inexact = 0;
   std::vector<float> strip(static_cast<std::size_t>(w) * tile), part;
   for (int y0 = 0; y0 < ht; y0 += tile) {
     const int h = std::min(tile, ht - y0);
@@ -52,6 +52,7 @@ Heightfield load_paged_heights(const std::string& path, const SampleDecoding& de
       part.resize(static_cast<std::size_t>(tw) * h);
       const TileVoids v = reader->read(x0, y0, tw, h, part.data());
       voids += v.filled;
+      deep += v.deep;
       inexact += v.inexact;
       for (int r = 0; r < h; ++r)
         std::copy_n(part.data() + std::size_t(r) * tw, tw, strip.data() + std::size_t(r) * w + x0);
@@ -96,6 +97,8 @@ Heightfield load_paged_heights(const std::string& path, const SampleDecoding& de
   hf.max_m = hi;
   hf.mean_m = sum / (double(w) * double(ht));
   hf.nodata_count = voids;
+  hf.deep_void_count = deep;
+  hf.void_fill = void_fill;
 
   overview->finalize_stats();
   overview->source = path + " (overview, every " + std::to_string(step) + " samples)";

@@ -19,10 +19,11 @@ namespace ig::terrain {
 // Side the paged overview is made to fit (render::TerrainScene::kOverviewSide).
 constexpr int kPagedOverviewSide = 4097;
 
-// Fills width, height, paged, the statistics and nodata_count of a
-// Heightfield for `path` (georeferencing is the caller's). Throws
+// Fills width, height, paged, the statistics, nodata_count and
+// deep_void_count of a Heightfield for `path` (georeferencing is the
+// caller's); voids filled with `void_fill` (terrain/void_fill.h). Throws
 // std::runtime_error with a reason on a read failure or an all-void DEM.
-Heightfield load_paged_heights(const std::string& path, const SampleDecoding& decoding, std::size_t budget_bytes,
-                               int tile);
+Heightfield load_paged_heights(const std::string& path, const SampleDecoding& decoding,
+                               const VoidFillOptions& void_fill, std::size_t budget_bytes, int tile);
 
 }  // namespace ig::terrain

@@ -20,9 +20,9 @@ struct PagedHeights {
   std::shared_ptr<const Heightfield> overview;
   int overview_step = 1;
   std::shared_ptr<const HeightPyramid> pyramid;
-  // Void samples filled from a bounded neighbourhood that may differ from
-  // the whole-array load's fill: farther than kMaxVoidHalo samples from any
-  // valid sample (terrain/gdal_tile_reader.h). 0 for most DEMs.
+  // Deep void samples filled from a bounded neighbourhood that may differ
+  // from the whole-array load's fill: more than kMaxExactDeepLayer layers
+  // inside GDAL's reach (terrain/gdal_tile_reader.h). 0 for most DEMs.
   std::int64_t inexact_voids = 0;
   // What the source needs while tiles are read (a folder's in-memory mosaic
   // VRTs, terrain/dem_mosaic.h); empty for a file.

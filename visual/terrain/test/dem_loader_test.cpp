@@ -219,8 +219,7 @@ TEST_F(DemLoaderTest, GeoTiffUInt16ProjectedUtm) {
 }
 
 TEST_F(DemLoaderTest, GeoTiffFloat32NodataIsFilledAndCounted) {
-  // A tilted plane: filling a void with the mean of its neighbours keeps a
-  // plane exactly, so filled values can be checked.
+  // A tilted plane, so filled values can be checked against it.
   const int w = 32, h = 24;
   auto plane = [](int c, int r) { return 1000.0 + 2.5 * c - 1.5 * r; };
   RasterSpec s{w, h, GDT_Float32, {}, std::array<double, 6>{300000, 10, 0, 5000000, 0, -10},
@@ -243,7 +242,14 @@ TEST_F(DemLoaderTest, GeoTiffFloat32NodataIsFilledAndCounted) {
   expect_no_nan(hf);
   EXPECT_EQ(hf.nodata_count, voids);
   auto at_file = [&](int c, int r) { return hf.at(c, h - 1 - r); };
-  EXPECT_NEAR(at_file(5, 5), plane(5, 5), 1e-3);
+  // The lone void: GDAL's fill takes the nearest valid sample in each
+  // quadrant, N (+1.5 m from the plane at the void), S (-1.5), E (+2.5) at
+  // 1 sample and SE (+1) at sqrt 2, weighted by 1 / distance; each of the
+  // two smoothing passes then averages it with its 8 valid neighbours, whose
+  // mean is the plane there, so 1/81 of the interpolation's offset is left.
+  const double r2 = std::sqrt(2.0);
+  const double offset = (1.5 - 1.5 + 2.5 + 1.0 / r2) / (3.0 + 1.0 / r2);
+  EXPECT_NEAR(at_file(5, 5), plane(5, 5) + offset / 81.0, 1e-3);
   // (20..22, 10) are adjacent voids: filled from one-sided neighbours, so only
   // close to the plane (it rises 2.5 m per column).
   EXPECT_NEAR(at_file(20, 10), plane(20, 10), 2.5);
@@ -293,8 +299,14 @@ TEST_F(DemLoaderTest, EsriAsciiGrid) {
   EXPECT_EQ(hf.at(0, 2), 1.0f);  // first text row is north
   EXPECT_EQ(hf.at(3, 0), 12.0f);
   EXPECT_EQ(hf.nodata_count, 1);
-  // Mean of its 8 neighbours 1 2 3 5 7 9 10 11.
-  EXPECT_FLOAT_EQ(hf.at(1, 1), 48.0f / 8.0f);
+  // GDAL's fill: the nearest valid sample in each quadrant, 2 (north) 10
+  // (south) 7 (east) at 1 sample and 11 (south-east) at sqrt 2, weighted by
+  // 1 / distance; then two smoothing passes, each the mean of the 3x3 block
+  // (its 8 neighbours sum to 48).
+  const double r2 = std::sqrt(2.0);
+  const double interpolated = (2.0 + 10.0 + 7.0 + 11.0 / r2) / (3.0 + 1.0 / r2);
+  const double smoothed = (48.0 + (48.0 + interpolated) / 9.0) / 9.0;
+  EXPECT_NEAR(hf.at(1, 1), smoothed, 1e-5);
   EXPECT_EQ(hf.spacing_x_m, 10.0);  // no .prj: cell size taken as metres
   EXPECT_EQ(hf.spacing_y_m, 10.0);
   ASSERT_TRUE(hf.georef);

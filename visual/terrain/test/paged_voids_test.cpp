@@ -1,17 +1,19 @@
 // Voids filled the same when paged (terrain/gdal_tile_reader.h): GeoTIFFs
 // with nodata voids across tile edges and corners, made at test time,
-// loaded whole and with a 1 MB budget in 64^2 tiles. Voids within
-// kMaxVoidHalo samples of a valid sample fill bit for bit as the whole
-// load fills them; deeper ones are counted (PagedHeights::inexact_voids)
-// and are the only samples that differ; the pyramid built at load bounds
-// the heights the tiles serve either way.
+// loaded whole and with a 1 MB budget in 64^2 tiles, with the default fill
+// (max distance 400) and with short search distances (small ones make the
+// paged windows much smaller than the DEM, large ones make deep voids).
+// Every sample GDAL fills, and every deep one within kMaxExactDeepLayer
+// layers, fills bit for bit as the whole load fills it; deeper ones are
+// counted (PagedHeights::inexact_voids) and are the only samples that
+// differ; the pyramid built at load bounds the heights the tiles serve
+// either way.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <cmath>
-#include <deque>
 #include <filesystem>
 #include <limits>
 #include <vector>
@@ -55,37 +57,21 @@ std::string write_geotiff(const fs::path& path, int w, int h, const std::vector<
   return path.string();
 }
 
-// Each sample's distance in 8-neighbour steps to the nearest valid sample
-// (0 for valid ones): a breadth-first search written here, not the fill's.
-std::vector<int> void_layers(const std::vector<float>& v, int w, int h) {
-  std::vector<int> layer(v.size(), -1);
-  std::deque<int> queue;
-  for (int k = 0; k < int(v.size()); ++k)
-    if (v[k] != kNodata) {
-      layer[k] = 0;
-      queue.push_back(k);
-    }
-  while (!queue.empty()) {
-    const int k = queue.front();
-    queue.pop_front();
-    const int i = k % w, j = k / w;
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int di = -1; di <= 1; ++di) {
-        const int ii = i + di, jj = j + dj;
-        if (ii < 0 || jj < 0 || ii >= w || jj >= h || layer[jj * w + ii] >= 0) continue;
-        layer[jj * w + ii] = layer[k] + 1;
-        queue.push_back(jj * w + ii);
-      }
-  }
-  return layer;
-}
-
-Heightfield load_paged(const std::string& path) {
+Heightfield load_paged(const std::string& path, const VoidFillOptions& fill = {}) {
   DemLoadOptions o;
   o.memory_budget_mb = 1;
   o.page_tile = kTile;
+  o.void_fill = fill;
   Heightfield hf = load_dem(path, o);
   EXPECT_TRUE(hf.paged);
+  return hf;
+}
+
+Heightfield load_whole(const std::string& path, const VoidFillOptions& fill = {}) {
+  DemLoadOptions o;
+  o.void_fill = fill;
+  Heightfield hf = load_dem(path, o);
+  EXPECT_FALSE(hf.paged);
   return hf;
 }
 
@@ -150,32 +136,19 @@ class PagedVoids : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(PagedVoids, VoidsWithinTheHaloFillBitForBitAcrossTileEdges) {
-  const int w = 700, h = 650;  // ragged last tiles in both directions
-  const std::vector<Rect> voids = {
-      {60, 60, 69, 69},      // across a tile corner (64, 64)
-      {120, 10, 136, 300},   // a strip across the x = 128 edge and 4 tile rows
-      {0, 250, 40, 262},     // at the DEM's west edge, across y = 256
-      {300, 300, 330, 330},  // across the corner (320, 320)
-      {500, 180, 650, 330},  // 150^2: layers to 75, deeper than the first halo
-      {690, 600, 700, 650},  // the DEM's north-east corner
-      {256, 0, 257, 650},    // a one-sample line the whole height, on a tile edge
-  };
-  const std::vector<float> v = make_heights(w, h, voids);
-  const std::vector<int> layer = void_layers(v, w, h);
-  int deepest = 0;
-  for (int l : layer) deepest = std::max(deepest, l);
-  ASSERT_GT(deepest, kVoidHalo);      // the halo must grow for the big void
-  ASSERT_LE(deepest, kMaxVoidHalo);   // and can: every sample is exact
-  const std::string path = write_geotiff(dir_ / "voids.tif", w, h, v);
-  const Heightfield whole = load_dem(path);
-  const Heightfield paged = load_paged(path);
-  ASSERT_FALSE(whole.paged);
-  EXPECT_GT(whole.nodata_count, 25000);
+// Whole and paged loads of `path` with `fill`: the same samples, statistics,
+// overview and pyramid.
+void expect_paged_equals_whole(const std::string& path, const VoidFillOptions& fill) {
+  const Heightfield whole = load_whole(path, fill);
+  const Heightfield paged = load_paged(path, fill);
+  const int w = whole.width, h = whole.height;
   EXPECT_EQ(paged.nodata_count, whole.nodata_count);
+  EXPECT_EQ(paged.deep_void_count, whole.deep_void_count);
   EXPECT_EQ(paged.paged->inexact_voids, 0);
+  std::int64_t differ = 0;
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) ASSERT_EQ(paged.at(i, j), whole.at(i, j)) << i << "," << j << " layer " << layer[j * w + i];
+    for (int i = 0; i < w; ++i) differ += paged.at(i, j) != whole.at(i, j);
+  ASSERT_EQ(differ, 0);
   EXPECT_EQ(paged.min_m, whole.min_m);
   EXPECT_EQ(paged.max_m, whole.max_m);
   EXPECT_EQ(paged.mean_m, whole.mean_m);
@@ -191,30 +164,77 @@ TEST_F(PagedVoids, VoidsWithinTheHaloFillBitForBitAcrossTileEdges) {
   expect_pyramid_bounds_served(paged);
 }
 
-TEST_F(PagedVoids, VoidsDeeperThanTheLargestHaloAreCountedAndBounded) {
+TEST_F(PagedVoids, FilledBitForBitAcrossTileEdges) {
+  const int w = 1100, h = 950;  // ragged last tiles in both directions; wider than the default fill's windows
+  const std::vector<Rect> voids = {
+      {60, 60, 69, 69},       // across a tile corner (64, 64)
+      {120, 10, 136, 300},    // a strip across the x = 128 edge and 4 tile rows
+      {0, 250, 40, 262},      // at the DEM's west edge, across y = 256
+      {300, 300, 330, 330},   // across the corner (320, 320)
+      {500, 180, 650, 330},   // 150^2: beyond small search distances
+      {1090, 900, 1100, 950}, // the DEM's north-east corner
+      {256, 0, 257, 950},     // a one-sample line the whole height, on a tile edge
+      {700, 600, 703, 900},   // a thin strip 300 samples tall
+      {800, 700, 900, 702},   // a thin strip 100 samples wide
+  };
+  const std::string path = write_geotiff(dir_ / "voids.tif", w, h, make_heights(w, h, voids));
+  for (const VoidFillOptions fill : {VoidFillOptions{}, VoidFillOptions{24, 2}, VoidFillOptions{24, 0},
+                                     VoidFillOptions{6, 5}, VoidFillOptions{90, 1}}) {
+    SCOPED_TRACE("max_distance " + std::to_string(fill.max_distance) + ", smoothing " +
+                 std::to_string(fill.smoothing_iterations));
+    expect_paged_equals_whole(path, fill);
+  }
+}
+
+TEST_F(PagedVoids, DeepVoidsFillBitForBitWithinTheirLayerLimit) {
+  const int w = 700, h = 650;
+  // 150^2 with max distance 24: deep samples up to 51 layers in.
+  const std::vector<Rect> voids = {{500, 180, 650, 330}, {60, 60, 69, 69}};
+  const std::string path = write_geotiff(dir_ / "deep_exact.tif", w, h, make_heights(w, h, voids));
+  const VoidFillOptions fill{24, 2};
+  const Heightfield whole = load_whole(path, fill);
+  EXPECT_GT(whole.deep_void_count, 100 * 100);
+  expect_paged_equals_whole(path, fill);
+}
+
+TEST_F(PagedVoids, VoidsDeeperThanTheLayerLimitAreCountedAndBounded) {
   const int w = 1100, h = 900;
-  // 640^2: layers to 320, the middle 128^2 deeper than kMaxVoidHalo; the
-  // middle tiles' windows hold no valid sample at all (0 m there).
-  const std::vector<Rect> voids = {{230, 130, 870, 770}, {60, 60, 69, 69}};
+  // 640^2 with max distance 20: samples more than 20 from every side are
+  // deep, their layer is that distance less 20, and those beyond
+  // kMaxExactDeepLayer layers (the middle 2 * (320 - 20 - 256) = 88 a side)
+  // may differ when paged.
+  const VoidFillOptions fill{20, 2};
+  const Rect big{230, 130, 870, 770};
+  const std::vector<Rect> voids = {big, {60, 60, 69, 69}};
   const std::vector<float> v = make_heights(w, h, voids);
-  const std::vector<int> layer = void_layers(v, w, h);
-  std::int64_t deep = 0;
-  for (int l : layer) deep += l > kMaxVoidHalo;
-  ASSERT_EQ(deep, 128 * 128);
+  auto edge_distance = [&](int i, int j) {  // samples to the nearest valid one, straight across a side
+    return std::min({i - big.x0 + 1, big.x1 - i, j - big.y0 + 1, big.y1 - j});
+  };
+  std::int64_t deep = 0, beyond = 0;
+  for (int j = big.y0; j < big.y1; ++j)
+    for (int i = big.x0; i < big.x1; ++i) {
+      deep += edge_distance(i, j) > fill.max_distance;
+      beyond += edge_distance(i, j) - fill.max_distance > kMaxExactDeepLayer;
+    }
+  ASSERT_EQ(beyond, 88 * 88);
   const std::string path = write_geotiff(dir_ / "deep.tif", w, h, v);
-  const Heightfield whole = load_dem(path);
-  const Heightfield paged = load_paged(path);
+  const Heightfield whole = load_whole(path, fill);
+  const Heightfield paged = load_paged(path, fill);
+  EXPECT_EQ(whole.deep_void_count, deep);
   EXPECT_EQ(paged.nodata_count, whole.nodata_count);
-  EXPECT_EQ(paged.paged->inexact_voids, deep);
+  EXPECT_EQ(paged.deep_void_count, deep);
+  EXPECT_EQ(paged.paged->inexact_voids, beyond);
   std::int64_t differ = 0;
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       if (paged.at(i, j) == whole.at(i, j)) continue;
       ++differ;
-      ASSERT_GT(layer[j * w + i], kMaxVoidHalo) << i << "," << j << ": a shallower void sample differs";
+      const bool in_big = i >= big.x0 && i < big.x1 && j >= big.y0 && j < big.y1;
+      ASSERT_TRUE(in_big && edge_distance(i, j) - fill.max_distance > kMaxExactDeepLayer)
+          << i << "," << j << ": a sample within the layer limit differs";
     }
   EXPECT_GT(differ, 0);
-  EXPECT_LE(differ, deep);
+  EXPECT_LE(differ, beyond);
   // Every tile read again after the cache evicted it (270 tiles, 64 fit): the same samples.
   std::vector<float> first(std::size_t(w) * h);
   for (int j = 0; j < h; ++j)
@@ -243,6 +263,7 @@ TEST(PagedVoidsRealDems, SameSamplesAsTheWholeLoad) {
     const Heightfield paged = load_paged(path);
     EXPECT_GT(whole.nodata_count, 0) << name;
     EXPECT_EQ(paged.nodata_count, whole.nodata_count) << name;
+    EXPECT_EQ(paged.deep_void_count, whole.deep_void_count) << name;
     EXPECT_EQ(paged.paged->inexact_voids, 0) << name;
     std::int64_t differ = 0;
     for (int j = 0; j < whole.height; ++j)
