@@ -24,17 +24,6 @@ uniform vec2 u_height_range;    // DEM min, max (m)
 uniform vec3 u_sun_dir;         // towards the directional light (the sun, or the twilight sky), normalised
 uniform vec3 u_light_color;     // its RGB; with u_ambient from the sun's elevation (environment/sky_light.h)
 uniform vec3 u_ambient;         // light from the whole sky, RGB
-// Ground detail (render/terrain_scene.cpp, terrain/detail_noise.h): a
-// tileable noise texture (r fine grain, g clumps, b patches, a broad swells),
-// mipmapped, fixed to the terrain at three tile sizes. A tile's coordinate is
-// (s - anchor) * spacing / tile + phase, the anchor a whole sample near the
-// eye and the phase its position in the tile computed in double on the CPU,
-// so it is as exact as s itself however far the terrain reaches.
-uniform sampler2D u_detail;
-uniform bool u_detail_on;
-uniform vec2 u_detail_anchor;
-uniform float u_detail_tile_m[3];
-uniform vec2 u_detail_phase[3];
 uniform vec3 u_fog_color;
 uniform float u_fog_k;          // fog factor 1 - exp(-(k d)^2); 0 = no fog
 
@@ -90,48 +79,9 @@ vec3 ramp(float h01, float slope) {
   return mix(c, snow, smoothstep(snow_line, snow_line + 0.06, h01));
 }
 
-// The detail texture at tile size k, filtered for this pixel's footprint
-// (the derivatives of the unwrapped coordinate: no seam where the phase wraps).
-vec4 detail(vec2 s, int k) {
-  vec2 scale = u_spacing / u_detail_tile_m[k];
-  vec2 p = (s - u_detail_anchor) * scale + u_detail_phase[k];
-  return textureGrad(u_detail, p, dFdx(s) * scale, dFdy(s) * scale) - 0.5;
-}
-
-// log2 of the detail texels a pixel spans at tile size k: where a feature of
-// 2^L texels gets smaller than a pixel (L below this), it is gone.
-float detail_lod(vec2 s, int k) {
-  vec2 scale = u_spacing / u_detail_tile_m[k] * float(textureSize(u_detail, 0).x);
-  vec2 dx = dFdx(s) * scale, dy = dFdy(s) * scale;
-  return 0.5 * log2(max(max(dot(dx, dx), dot(dy, dy)), 1e-12));
-}
-
-// Materials from height, slope and noise: the noise moves every boundary, so
-// vegetation, soil, rock and snow meet along soft irregular edges, and each
-// has its own grain. Zero-mean detail: far away (the texture's top mips) the
-// colour fades to the material's mean instead of sparkling.
-vec3 ground_albedo(vec2 s, float h01, float slope, out float grain) {
-  vec4 fine = detail(s, 0), mid = detail(s, 1), broad = detail(s, 2);
-  float h = h01 + 0.10 * broad.a + 0.05 * broad.b + 0.02 * mid.g;
-  float sl = slope + 0.45 * broad.b + 0.25 * mid.g;
-  vec3 c = ramp(clamp(h, 0.0, 1.0), clamp(sl, 0.0, 1.0));
-  // Vegetation thins into bare soil in patches (sagebrush and grass over
-  // sand), rock shows strata-like streaks, snow stays smooth.
-  float veg = (1.0 - smoothstep(0.30, 0.55, h)) * (1.0 - smoothstep(0.45, 0.80, sl));
-  float bare = smoothstep(-0.05, 0.12, broad.b + 0.6 * mid.b);
-  vec3 soil = vec3(0.55, 0.49, 0.38);
-  c = mix(c, soil, 0.55 * veg * bare);
-  // Shrubs: sharp-edged clumps (8 texels at the middle tile, ~3 m) while
-  // they span pixels; farther, their share of the ground (about a quarter),
-  // since a threshold of the filtered noise would thin them out with distance.
-  float shrubs = smoothstep(0.02, 0.22, mid.g + 0.5 * fine.g);
-  shrubs = mix(shrubs, 0.25, smoothstep(1.5, 3.5, detail_lod(s, 1)));
-  c *= 1.0 - 0.35 * veg * shrubs;
-  float rock = smoothstep(0.50, 0.80, sl) * (1.0 - smoothstep(0.85, 0.92, h));
-  c *= 1.0 + rock * (0.5 * mid.b + 0.35 * fine.g);
-  grain = 0.55 * fine.r + 0.35 * mid.r + 0.25 * fine.g;
-  return c * (1.0 + grain);
-}
+// The surface colour before light: ground_plain.frag or ground_detail.frag
+// (render/terrain_scene.h, TerrainScene::shading_stages).
+vec3 surface_albedo(vec2 s, float h01, float slope);
 
 vec3 shade(vec2 s, float dist) {
   float hl = height_at(s - vec2(1, 0)), hr = height_at(s + vec2(1, 0));
@@ -140,17 +90,7 @@ vec3 shade(vec2 s, float dist) {
   float slope = 1.0 - n.z;
   float span = max(u_height_range.y - u_height_range.x, 1.0);
   float h01 = clamp((height_at(s) - u_height_range.x) / span, 0.0, 1.0);
-  vec3 albedo;
-  if (!u_detail_on) {
-    albedo = u_has_imagery ? imagery_at(s) : ramp(h01, clamp(slope * 3.0, 0.0, 1.0));
-  } else if (u_has_imagery) {  // the imagery's own colours, the grain finer than its pixels
-    float grain;
-    ground_albedo(s, h01, clamp(slope * 3.0, 0.0, 1.0), grain);
-    albedo = imagery_at(s) * (1.0 + grain);
-  } else {
-    float grain;
-    albedo = ground_albedo(s, h01, clamp(slope * 3.0, 0.0, 1.0), grain);
-  }
+  vec3 albedo = surface_albedo(s, h01, clamp(slope * 3.0, 0.0, 1.0));
   float diffuse = max(dot(n, u_sun_dir), 0.0);
   vec3 color = albedo * (u_ambient + u_light_color * diffuse);
   float fog = 1.0 - exp(-(u_fog_k * dist) * (u_fog_k * dist));

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scenario_error.h"
+
 #include "io/scenario.h"
 #include "io/utc_time.h"
 
@@ -17,16 +19,6 @@ std::string with_environment(const std::string& environment, const std::string& 
               "path": {"keys": [{"t": 0, "position": [0, 0, 100]}]},
               "render": )" +
          render + R"(, "environment": )" + environment + "}";
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    parse_scenario(text);
-  } catch (const ScenarioError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a ScenarioError for:\n" << text;
-  return "";
 }
 
 TEST(EnvironmentScenario, TimeUtcIsRead) {
@@ -91,7 +83,7 @@ TEST(EnvironmentScenario, BadTimesNameTheKeyAndTheReason) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.environment);
-    const std::string msg = error_of(with_environment(c.environment));
+    const std::string msg = scenario_error_of(with_environment(c.environment));
     for (const std::string& want : c.expect)
       EXPECT_NE(msg.find(want), std::string::npos) << "message: " << msg << "\nwanted: " << want;
   }

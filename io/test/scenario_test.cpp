@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scenario_error.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -19,16 +21,6 @@ using namespace ig::io;
 
 // Message of the ScenarioError that parsing `text` throws; fails the test
 // (and returns "") when it parses.
-std::string error_of(const std::string& text) {
-  try {
-    parse_scenario(text);
-  } catch (const ScenarioError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a ScenarioError for:\n" << text;
-  return "";
-}
-
 // A minimal valid document with `extra` spliced in at top level (which may
 // replace "terrain"/"path" when `terrain`/`path` are given).
 std::string doc(const std::string& extra = "", const std::string& terrain = R"({"generator": {"size": 257}})",
@@ -334,7 +326,7 @@ TEST(Scenario, ErrorsNameTheirKey) {
   };
   for (const ErrorCase& c : cases) {
     SCOPED_TRACE(c.label);
-    const std::string msg = error_of(c.text);
+    const std::string msg = scenario_error_of(c.text);
     EXPECT_EQ(msg.rfind("<string>: ", 0), 0u) << msg;  // origin first
     for (const std::string& want : c.expect) {
       EXPECT_NE(msg.find(want), std::string::npos) << "message: " << msg << "\nwanted: " << want;
@@ -344,12 +336,12 @@ TEST(Scenario, ErrorsNameTheirKey) {
 
 TEST(Scenario, SyntaxErrorReportsPosition) {
   const std::string text = "{\n  \"terrain\": {\"generator\": {}},\n  \"path\": {\"keys\": [}\n}\n";
-  const std::string msg = error_of(text);
+  const std::string msg = scenario_error_of(text);
   EXPECT_NE(msg.find("line 3"), std::string::npos) << msg;
   EXPECT_NE(msg.find("column"), std::string::npos) << msg;
   EXPECT_NE(msg.find("byte"), std::string::npos) << msg;
-  EXPECT_NE(error_of("").find("line 1"), std::string::npos);
-  EXPECT_NE(error_of("{\"a\": 1,}").find("invalid JSON"), std::string::npos);
+  EXPECT_NE(scenario_error_of("").find("line 1"), std::string::npos);
+  EXPECT_NE(scenario_error_of("{\"a\": 1,}").find("invalid JSON"), std::string::npos);
 }
 
 TEST(Scenario, OriginPrefixesMessages) {

@@ -26,7 +26,7 @@ import subprocess
 import sys
 
 ig, src, out = (os.path.abspath(a) for a in sys.argv[1:4])
-TOP_LEVEL = {"name", "terrain", "render", "channels", "path", "time", "capture", "live"}
+TOP_LEVEL = {"name", "terrain", "render", "environment", "channels", "path", "time", "capture", "live"}
 BASE = {
     "terrain": {"generator": {"size": 257, "origin": [36.66, -118.13]}},
     "path": {"keys": [{"t": 0, "position": [1000, 1000, 2500]}]},

@@ -16,7 +16,7 @@ constexpr int kMaxLods = 16;  // shaders/cdlod.vert's uniform arrays
 CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range)
     : scene_(scene),
       lod0_range_(lod0_range),
-      program_(shader_dir, "cdlod.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
+      program_(shader_dir, "cdlod.vert", scene.shading_stages({"terrain.frag"})),
       tree_(scene.heightfield()),
       mesh_(Q) {
   if (!(lod0_range > 0.0) || !std::isfinite(lod0_range))

@@ -22,7 +22,7 @@ constexpr float kSkirtMarginM = 1.0f;
 ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
     : scene_(scene),
       tau_px_(tau_px),
-      program_(shader_dir, "chunked.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
+      program_(shader_dir, "chunked.vert", scene.shading_stages({"terrain.frag"})),
       tree_(scene.heightfield()) {
   if (!(tau_px > 0.0) || !std::isfinite(tau_px))
     throw std::invalid_argument("chunked: tau_px must be a positive number of pixels, got " + std::to_string(tau_px));

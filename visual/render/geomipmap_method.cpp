@@ -40,7 +40,7 @@ void strip_box(const terrain::Heightfield& hf, const lod::GeoMipBlock& b, int si
 GeoMipMapMethod::GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
     : scene_(scene),
       tau_px_(tau_px),
-      program_(shader_dir, "terrain_grid.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
+      program_(shader_dir, "terrain_grid.vert", scene.shading_stages({"terrain.frag"})),
       blocks_(scene.heightfield()) {
   if (!(tau_px > 0.0) || !std::isfinite(tau_px))
     throw std::invalid_argument("geomipmap: tau_px must be a positive number of pixels, got " + std::to_string(tau_px));

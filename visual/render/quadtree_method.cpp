@@ -8,7 +8,7 @@
 namespace ig::render {
 
 QuadtreeMethod::QuadtreeMethod(const TerrainScene& scene, const std::string& shader_dir, QuadtreeOptions options)
-    : scene_(scene), options_(options), tess_(scene.heightfield()), stream_(shader_dir) {
+    : scene_(scene), options_(options), tess_(scene.heightfield()), stream_(scene, shader_dir) {
   if (!(options_.c1 > 0.0) || !std::isfinite(options_.c1) || !(options_.c2 >= 0.0) || !std::isfinite(options_.c2))
     throw std::invalid_argument("quadtree: C1 must be > 0 and C2 >= 0, both finite (got C1 = " +
                                 std::to_string(options_.c1) + ", C2 = " + std::to_string(options_.c2) + ")");

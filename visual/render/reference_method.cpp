@@ -5,7 +5,7 @@
 namespace ig::render {
 
 ReferenceMethod::ReferenceMethod(const TerrainScene& scene, const std::string& shader_dir, int n)
-    : scene_(scene), program_(shader_dir, "terrain_grid.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}), mesh_(n) {
+    : scene_(scene), program_(shader_dir, "terrain_grid.vert", scene.shading_stages({"terrain.frag"})), mesh_(n) {
   const auto& hf = scene.heightfield();
   for (int j0 = 0; j0 < hf.height - 1; j0 += n)
     for (int i0 = 0; i0 < hf.width - 1; i0 += n) {

@@ -8,7 +8,7 @@
 namespace ig::render {
 
 RoamMethod::RoamMethod(const TerrainScene& scene, const std::string& shader_dir, RoamOptions options)
-    : scene_(scene), options_(options), tess_(scene.heightfield(), scene.earth_radius_m()), stream_(shader_dir) {
+    : scene_(scene), options_(options), tess_(scene.heightfield(), scene.earth_radius_m()), stream_(scene, shader_dir) {
   if (!(options_.tau_px >= 0.0) || !std::isfinite(options_.tau_px))
     throw std::invalid_argument("roam: tau_px must be a finite value >= 0 (got " + std::to_string(options_.tau_px) +
                                 ")");

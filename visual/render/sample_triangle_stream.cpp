@@ -7,8 +7,8 @@
 
 namespace ig::render {
 
-SampleTriangleStream::SampleTriangleStream(const std::string& shader_dir)
-    : program_(shader_dir, "level0.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}) {
+SampleTriangleStream::SampleTriangleStream(const TerrainScene& scene, const std::string& shader_dir)
+    : program_(shader_dir, "level0.vert", scene.shading_stages({"terrain.frag"})) {
   vbo_ = gl::create_buffer();
   vao_ = gl::create_vertex_array();
   glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, sizeof(glm::u16vec2));

@@ -20,7 +20,7 @@ namespace ig::render {
 
 class SampleTriangleStream {
  public:
-  explicit SampleTriangleStream(const std::string& shader_dir);
+  SampleTriangleStream(const TerrainScene& scene, const std::string& shader_dir);
 
   // Uploads 3 vertices per triangle and draws them into the bound target.
   void draw(const std::vector<glm::u16vec2>& vertices, const TerrainScene& scene, const Camera& camera);

@@ -1,5 +1,6 @@
 #include "render/terrain_scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -17,19 +18,25 @@ namespace {
 // the same at an unrelated size so no repeat shows, broad patches.
 constexpr float kDetailTileM[3] = {32.0f, 87.3f, 2048.0f};
 
-gl::Texture upload_detail_texture() {
-  const terrain::DetailNoise noise = terrain::make_detail_noise();
+// An RGB(A) 8-bit texture with its whole mip chain.
+gl::Texture upload_mipmapped(GLenum internal_format, GLenum format, int width, int height, const void* pixels,
+                             GLint wrap) {
   gl::Texture t = gl::create_texture(GL_TEXTURE_2D);
-  const int levels = 1 + int(std::log2(noise.size));
-  glTextureStorage2D(t.id(), levels, GL_RGBA8, noise.size, noise.size);
+  const int levels = 1 + int(std::floor(std::log2(std::max(width, height))));
+  glTextureStorage2D(t.id(), levels, internal_format, width, height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(t.id(), 0, 0, 0, noise.size, noise.size, GL_RGBA, GL_UNSIGNED_BYTE, noise.rgba.data());
+  glTextureSubImage2D(t.id(), 0, 0, 0, width, height, format, GL_UNSIGNED_BYTE, pixels);
   glGenerateTextureMipmap(t.id());
   glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, wrap);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, wrap);
   return t;
+}
+
+gl::Texture upload_detail_texture() {
+  const terrain::DetailNoise noise = terrain::make_detail_noise();
+  return upload_mipmapped(GL_RGBA8, GL_RGBA, noise.size, noise.size, noise.rgba.data(), GL_REPEAT);
 }
 }  // namespace
 
@@ -87,16 +94,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     } catch (const std::exception& e) {
       throw gl::GlError(e.what());
     }
-    imagery_tex_ = gl::create_texture(GL_TEXTURE_2D);
-    const int levels = 1 + int(std::floor(std::log2(std::max(img.width, img.height))));
-    glTextureStorage2D(imagery_tex_.id(), levels, GL_RGB8, img.width, img.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(imagery_tex_.id(), 0, 0, 0, img.width, img.height, GL_RGB, GL_UNSIGNED_BYTE, img.rgb.data());
-    glGenerateTextureMipmap(imagery_tex_.id());
-    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(imagery_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    imagery_tex_ = upload_mipmapped(GL_RGB8, GL_RGB, img.width, img.height, img.rgb.data(), GL_CLAMP_TO_EDGE);
     imagery_uncovered_ = img.uncovered;
     imagery_overview_step_ = img.full_step;
     // The overview spans whole blocks, a little more than the footprint
@@ -111,6 +109,13 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
       window_imagery_ = std::make_unique<terrain::Imagery>(std::move(img));
     }
   }
+}
+
+std::vector<std::string> TerrainScene::shading_stages(const std::vector<std::string>& own) const {
+  std::vector<std::string> stages = {"terrain_shading.frag",
+                                     shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag"};
+  stages.insert(stages.end(), own.begin(), own.end());
+  return stages;
 }
 
 void TerrainScene::set_ground_detail(bool on) {
@@ -168,11 +173,10 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   p.set("u_sun_dir", sky_light_.light_direction);
   p.set("u_light_color", sky_light_.light_colour);
   p.set("u_ambient", sky_light_.ambient);
-  // Ground detail on unit 7: the tiles' phase at a whole sample near the eye,
-  // in double (a float product of a large sample index would lose it).
-  const bool detail = shading_.ground_detail && detail_tex_;
-  p.set("u_detail_on", detail ? 1 : 0);
-  if (detail) {
+  // Ground detail on unit 7 (programs linked with ground_detail.frag): the
+  // tiles' phase at a whole sample near the eye, in double (a float product
+  // of a large sample index would lose it).
+  if (detail_tex_ && p.location("u_detail") >= 0) {
     glBindTextureUnit(7, detail_tex_.id());
     p.set("u_detail", 7);
     const glm::dvec2 spacing(heightfield_.spacing_x_m, heightfield_.spacing_y_m);

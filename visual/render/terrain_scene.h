@@ -74,7 +74,13 @@ class TerrainScene {
   const ShadingParams& shading() const { return shading_; }
   // Fog visibility in metres (0 = no fog); used from the next bind_common.
   void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
-  // Ground detail on or off from the next bind_common (its texture made on first use).
+  // The fragment stages of a terrain program: the shared shading
+  // (terrain_shading.frag), the surface colour with or without ground detail
+  // (ground_detail.frag / ground_plain.frag: a CPU rasterizer runs both sides
+  // of a branch, so what is off is not linked at all), then `own` (the
+  // method's main and helpers).
+  std::vector<std::string> shading_stages(const std::vector<std::string>& own) const;
+  // Ground detail for the programs made from now on (its texture made on first use).
   void set_ground_detail(bool on);
   // The light and sky (environment/sky_light.h) every terrain program and the
   // sky pass draw with: from shading().sun_direction (or the default sun)

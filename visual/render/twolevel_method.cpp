@@ -124,10 +124,10 @@ TwoLevelOptions with_budget(TwoLevelOptions o) {
 TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
     : scene_(scene),
       options_(with_budget(std::move(options))),
-      grid_program_(shader_dir, "terrain_grid.vert", std::vector<std::string>{"terrain_shading.frag", "terrain.frag"}),
-      level0_program_(shader_dir, "level0.vert", std::vector<std::string>{"terrain_shading.frag", "level0_blend.frag", "level0.frag"}),
+      grid_program_(shader_dir, "terrain_grid.vert", scene.shading_stages({"terrain.frag"})),
+      level0_program_(shader_dir, "level0.vert", scene.shading_stages({"level0_blend.frag", "level0.frag"})),
       level0_clipped_program_(shader_dir, "level0.vert",
-                              std::vector<std::string>{"terrain_shading.frag", "level0_blend.frag", "level0_clipped.frag"}),
+                              scene.shading_stages({"level0_blend.frag", "level0_clipped.frag"})),
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
       count_ms_program_(shader_dir, "fullscreen.vert", "coverage_count_ms.frag"),

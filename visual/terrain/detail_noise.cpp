@@ -7,23 +7,14 @@
 
 #include <glm/common.hpp>
 
+#include "terrain/lattice_hash.h"
+
 namespace ig::terrain {
 namespace {
 
-// A small integer hash (lowbias32): lattice values without a table.
-std::uint32_t hash(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-
 double lattice(int i, int j, int period, std::uint32_t seed) {
   const auto wrap = [period](int v) { return std::uint32_t(((v % period) + period) % period); };
-  const std::uint32_t h = hash(wrap(i) * 0x9e3779b9U ^ hash(wrap(j) + seed));
-  return double(h) / 4294967295.0 * 2.0 - 1.0;
+  return double(hash3(wrap(i), wrap(j), seed)) / 4294967295.0 * 2.0 - 1.0;
 }
 
 // Value noise with a quintic fade, periodic over `period` lattice cells.
@@ -47,7 +38,7 @@ std::vector<double> fractal(int size, int cells, int octaves, double gain, std::
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x)
         out[std::size_t(y) * size + x] += amplitude * value_noise((x + 0.5) * scale, (y + 0.5) * scale, cells,
-                                                                  hash(seed + std::uint32_t(o) * 7919U));
+                                                                  hash3(seed, std::uint32_t(o), 0xDE7Au));
   }
   return out;
 }

@@ -6,21 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "terrain/lattice_hash.h"
+
 namespace ig::terrain {
 
 namespace {
-
-// 32-bit integer mixer: a multiply / xor-shift finaliser over a linear
-// combination of the lattice coordinates and the seed.
-inline std::uint32_t hash3(std::uint32_t x, std::uint32_t y, std::uint32_t s) {
-  std::uint32_t h = x * 0x8DA6B343u + y * 0xD8163841u + s * 0xCB1AB31Fu + 0x165667B1u;
-  h ^= h >> 16;
-  h *= 0x7FEB352Du;
-  h ^= h >> 15;
-  h *= 0x846CA68Bu;
-  h ^= h >> 16;
-  return h;
-}
 
 // 16 unit gradient directions, every 22.5 degrees (literal values, so no
 // libm call can change them).

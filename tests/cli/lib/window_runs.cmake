@@ -10,7 +10,7 @@
 function(run_window_scenario name terrain render keys)
   file(WRITE "${OUT}/${name}.json" "{\"name\": \"${name}\",
   \"terrain\": {${terrain}},
-  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45${render}},
+  \"render\": {\"width\": 160, \"height\": 120, \"fov_y_deg\": 45, \"antialiasing\": \"off\", \"ground_detail\": false${render}},
   \"path\": {\"frame\": \"geodetic\", \"altitude\": \"agl\", \"keys\": [
     ${keys}]},
   \"time\": {\"step_s\": 0.5, \"duration_s\": 2}}\n")

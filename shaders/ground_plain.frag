@@ -1,0 +1,9 @@
+#version 450 core
+// The surface colour of terrain_shading.frag without ground detail: the
+// height and slope ramp, or the draped imagery.
+uniform bool u_has_imagery;
+
+vec3 imagery_at(vec2 s);             // terrain_shading.frag
+vec3 ramp(float h01, float slope);  // terrain_shading.frag
+
+vec3 surface_albedo(vec2 s, float h01, float slope) { return u_has_imagery ? imagery_at(s) : ramp(h01, slope); }
