@@ -11,7 +11,7 @@ float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
 float luma_at(vec2 uv) { return luma(textureLod(u_frame, uv, 0.0).rgb); }
 float luma_px(ivec2 p) { return luma(texelFetch(u_frame, p, 0).rgb); }  // clamped by the caller
 
-const float kEdgeMin = 1.0 / 32.0;  // ignore edges darker than this (absolute)
+const float kEdgeMin = 1.0 / 16.0;  // ignore edges fainter than this (absolute): the ground's grain stays sharp
 const float kEdgeRel = 1.0 / 8.0;   // ... or below this share of the local max
 const float kSubpixel = 0.75;       // weight of the low-pass term
 const int kSteps = 8;

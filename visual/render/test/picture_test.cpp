@@ -66,14 +66,17 @@ TEST(Picture, LowEyeSeesGroundDetailWithoutSparkle) {
   const auto s = scenario("sierra_low_30m.json");
   const int w = 480, h = 360;
   const double on = picture::highpass_std_lower_quarter(picture::render(s, 0, ShotSpec{w, h, "msaa"}));
+  const double fxaa = picture::highpass_std_lower_quarter(picture::render(s, 0, ShotSpec{w, h, "fxaa"}));
   const double off = picture::highpass_std_lower_quarter(picture::render(s, 0, ShotSpec{w, h, "msaa", false}));
   const double ss =
       picture::highpass_std_lower_quarter(picture::box_filter(picture::render(s, 0, ShotSpec{4 * w, 4 * h, "off"}), 4));
-  std::printf("[detail sierra 30 m] high-pass std, lower quarter: detail %.2f, no detail %.2f, 16x SS %.2f levels\n",
-              on, off, ss);
+  std::printf("[detail sierra 30 m] high-pass std, lower quarter: detail %.2f (FXAA %.2f), no detail %.2f, "
+              "16x SS %.2f levels\n", on, fxaa, off, ss);
   EXPECT_GE(on, 2.0);
+  EXPECT_GE(fxaa, 2.0) << "the post filter must not smooth the detail away";
   EXPECT_LT(off, 1.0) << "without detail the valley floor is smooth";
   EXPECT_LE(on, 1.5 * ss);
+  EXPECT_LE(fxaa, 1.5 * ss);
 }
 
 // The same on generated terrain, so the goal is checked without the DEM.
