@@ -18,10 +18,11 @@ vec3 ramp(float h01, float slope);  // terrain_shading.frag
 
 // The detail texture at tile size k, filtered for this pixel's footprint
 // (p is never wrapped, so its derivatives have no seam where a tile repeats).
-// Half a mip level sharper than the footprint (bias -0.5): trilinear filtering blurs
-// more than the pixel's own box, and at 0.7 the lower quarter of a low view
-// has about the texture of a 4x4 supersampled render (picture_test).
-// texture(), not textureGrad(): llvmpipe picks the level once per 2x2 quad.
+// Half a mip level sharper than the footprint (bias -0.5): trilinear
+// filtering blurs more than the pixel's own box, and so biased the lower
+// quarter of a low view has about the texture of a 4x4 supersampled render
+// (picture_test). texture(), not textureGrad(): llvmpipe picks the level
+// once per 2x2 quad.
 vec4 detail(vec2 s, int k) {
   vec2 p = (s - u_detail_anchor) * (u_spacing / u_detail_tile_m[k]) + u_detail_phase[k];
   return texture(u_detail, p, -0.5) - 0.5;

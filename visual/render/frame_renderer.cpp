@@ -24,7 +24,7 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
     : scene_(scene),
       method_(&method),
       sky_(shader_dir, "sky.vert", "sky.frag"),
-      edge_aa_(shader_dir, "fullscreen.vert", "edge_aa.frag"),
+      shader_dir_(shader_dir),
       recorder_(pass_names_of(method)),
       empty_vao_(gl::create_vertex_array()) {
   method_->set_pass_recorder(&recorder_);
@@ -103,6 +103,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
     if (target.post_pass()) {
       target.bind_output();
       glDisable(GL_DEPTH_TEST);
+      if (!edge_aa_.id()) edge_aa_ = gl::ShaderProgram(shader_dir_, "fullscreen.vert", "edge_aa.frag");
       edge_aa_.use();
       glBindTextureUnit(0, target.drawn_color_texture());
       edge_aa_.set("u_frame", 0);

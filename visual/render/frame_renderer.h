@@ -52,7 +52,8 @@ class FrameRenderer {
   const TerrainScene& scene_;
   TerrainMethod* method_;
   gl::ShaderProgram sky_;
-  gl::ShaderProgram edge_aa_;  // post-filtered targets (gl::RenderTarget::post_pass)
+  std::string shader_dir_;
+  gl::ShaderProgram edge_aa_;  // made for the first post-filtered target (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;
   gl::VertexArray empty_vao_;  // the sky's full-screen triangle needs no vertices
   bool wireframe_ = false;

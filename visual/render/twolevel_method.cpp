@@ -129,8 +129,7 @@ TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& sha
       level0_clipped_program_(shader_dir, "level0.vert",
                               scene.shading_stages({"level0_blend.frag", "level0_clipped.frag"})),
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
-      count_program_(shader_dir, "fullscreen.vert", "coverage_count.frag"),
-      count_ms_program_(shader_dir, "fullscreen.vert", "coverage_count_ms.frag"),
+      shader_dir_(shader_dir),
       pyramid_(scene.height_pyramid()),
       level0_(lod::z_ordered(build_scene_level0(scene,  // on the overview beyond the texture limit
                                                 lod::Level0Options{options_.level0_budget, 0.0, scene.earth_radius_m(),
@@ -537,7 +536,13 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
     glViewport(0, 0, cw, ch);
     glDisable(GL_DEPTH_TEST);
     const gl::ScopedDisable no_culling(GL_CULL_FACE);
-    const gl::ShaderProgram& count = target.samples() > 1 ? count_ms_program_ : count_program_;
+    const bool multisampled = target.samples() > 1;
+    if (!count_program_.id() || count_multisampled_ != multisampled) {
+      count_program_ = gl::ShaderProgram(shader_dir_, "fullscreen.vert",
+                                         multisampled ? "coverage_count_ms.frag" : "coverage_count.frag");
+      count_multisampled_ = multisampled;
+    }
+    const gl::ShaderProgram& count = count_program_;
     count.use();
     glBindTextureUnit(5, target.drawn_color_texture());
     count.set("u_color", 5);

@@ -91,8 +91,11 @@ class TwoLevelMethod final : public TerrainMethod {
   int windows_ = -1;  // the scene's window set this method keeps on its Level1 (TerrainScene::claim_windows)
   TwoLevelOptions options_;
   gl::ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_;
-  // The coverage count over a single-sampled or a multisampled frame.
-  gl::ShaderProgram count_program_, count_ms_program_;
+  // The coverage count, for a single-sampled or a multisampled frame
+  // (made for the first frame's kind, again if the kind changes).
+  std::string shader_dir_;
+  gl::ShaderProgram count_program_;
+  bool count_multisampled_ = false;
   const terrain::HeightPyramid& pyramid_;  // the scene's, shared across channels
   glm::ivec2 viewport_{640, 480};
   std::vector<glm::dvec3> prediction_rays_;

@@ -38,8 +38,7 @@ inline std::string dem_dir() {
 // Frame `frame` of `scenario` (its path and settings; size, samples, detail
 // and method from `spec`).
 inline Shot render(ig::io::Scenario scenario, int frame, const ShotSpec& spec) {
-  scenario.render.antialiasing = spec.aa;
-  if (spec.aa == "msaa") scenario.render.msaa_samples = 4;
+  scenario.render.antialiasing = spec.aa;  // msaa: the default 4 samples
   scenario.render.shading.ground_detail = spec.detail;
   ig::session::RunOptions o;
   o.width = spec.w;
