@@ -1,0 +1,22 @@
+#pragma once
+// The one table of texture units. Every sampler a program reads is bound to
+// its own unit here, so no two passes can pick the same unit for different
+// textures (the shaders' sampler uniforms are set from these values).
+
+namespace ig::gl {
+
+enum class TextureUnit : int {
+  kHeight = 0,          // the scene's height texture (whole DEM or its overview)
+  kImagery = 1,         // draped imagery (or its overview)
+  kBetaTemplate = 2,    // two-level: the band's weight template
+  kBandColor = 3,       // two-level: the band target's uv, beta and mask
+  kBandDepth = 4,       // two-level: the band target's depth
+  kHeightWindow = 5,    // full-resolution heights around Level1
+  kImageryWindow = 6,   // full-resolution imagery around Level1
+  kGroundDetail = 7,    // the ground-detail noise
+  kFrameColor = 8,      // a full-screen pass's source: the drawn frame (post filter, coverage count)
+};
+
+constexpr int unit(TextureUnit u) { return static_cast<int>(u); }
+
+}  // namespace ig::gl
