@@ -2,7 +2,7 @@
 // line-of-sight requests over a DEM. Shared by the in-process benchmark
 // (tools/bench/bench_host_services.cpp) and the loopback test host
 // (tests/tools/cigi_query_host.cpp --bench) so both send the same load
-// (docs/results.md "Host services (issue 15)").
+// (docs/results.md, host services).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// A conservative upper envelope for the static Level0 mesh (issue 13): each
+// A conservative upper envelope for the static Level0 mesh: each
 // vertex is lifted so that no triangle passes below any DEM sample it
 // covers. A coarse Level0 then never cuts a ridge below the true skyline
 // (no sky through terrain); its remaining error is upwards only, at most

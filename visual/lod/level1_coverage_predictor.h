@@ -1,7 +1,7 @@
 #pragma once
 // Predicts, before drawing, the ratio R = Level1 pixels / terrain pixels for
-// every size on the Level1 ladder (issue 13: a size controller that settles
-// within a frame or two instead of stepping one size per frame). A coarse
+// every size on the Level1 ladder, so the size controller settles
+// within a frame or two rather than one size step per frame. A coarse
 // grid of view rays is cast against the terrain (exact ray cast on the
 // min/max pyramid); a ray that hits inside the N x N square Level1 would
 // occupy around E counts for size N. The same visible-pixel ratio the GPU

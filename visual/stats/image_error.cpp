@@ -25,32 +25,29 @@ int top_terrain_row(const FrameImage& f, int x) {
   return f.height;
 }
 
-// Reference sky grown by `rows` rows and `cols` columns (separable box
-// dilation): true where a reference-terrain pixel lies on a silhouette.
-std::vector<std::uint8_t> near_sky_mask(const FrameImage& ref, int rows, int cols) {
-  const int w = ref.width, h = ref.height;
-  std::vector<std::uint8_t> sky(std::size_t(w) * h), grown_x(sky.size()), grown(sky.size());
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) sky[std::size_t(y) * w + x] = !ref.terrain(x, y);
+// Grows a mask by `reach` pixels along one axis (dx, dy: the unit step).
+std::vector<std::uint8_t> grow_mask(const std::vector<std::uint8_t>& mask, int w, int h, int dx, int dy, int reach) {
+  std::vector<std::uint8_t> grown(mask.size());
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       std::uint8_t v = 0;
-      for (int dx = -cols; dx <= cols && !v; ++dx) {
-        const int xx = x + dx;
-        if (xx >= 0 && xx < w) v = sky[std::size_t(y) * w + xx];
-      }
-      grown_x[std::size_t(y) * w + x] = v;
-    }
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      std::uint8_t v = 0;
-      for (int dy = -rows; dy <= rows && !v; ++dy) {
-        const int yy = y + dy;
-        if (yy >= 0 && yy < h) v = grown_x[std::size_t(yy) * w + x];
+      for (int k = -reach; k <= reach && !v; ++k) {
+        const int xx = x + k * dx, yy = y + k * dy;
+        if (xx >= 0 && xx < w && yy >= 0 && yy < h) v = mask[std::size_t(yy) * w + xx];
       }
       grown[std::size_t(y) * w + x] = v;
     }
   return grown;
+}
+
+// Reference sky grown by `rows` rows and `cols` columns (separable box
+// dilation): true where a reference-terrain pixel lies on a silhouette.
+std::vector<std::uint8_t> near_sky_mask(const FrameImage& ref, int rows, int cols) {
+  const int w = ref.width, h = ref.height;
+  std::vector<std::uint8_t> sky(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) sky[std::size_t(y) * w + x] = !ref.terrain(x, y);
+  return grow_mask(grow_mask(sky, w, h, 1, 0, cols), w, h, 0, 1, rows);
 }
 
 }  // namespace
