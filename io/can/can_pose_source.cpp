@@ -4,8 +4,6 @@
 
 namespace ig::io::can {
 
-const char* can_format_name(CanFormat f) { return f == CanFormat::CanFd ? "canfd" : "canaerospace"; }
-
 CanPoseSource::CanPoseSource(CanPoseSourceOptions options)
     : options_(std::move(options)), socket_(options_.ifname, options_.retry_s), assembler_(options_.pose) {}
 

@@ -20,7 +20,6 @@
 namespace ig::io::can {
 
 enum class CanFormat : std::uint8_t { CanAerospace, CanFd };
-const char* can_format_name(CanFormat f);  // "canaerospace", "canfd"
 
 struct CanPoseSourceOptions {
   std::string ifname;

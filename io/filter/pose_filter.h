@@ -214,6 +214,7 @@ class PoseFilter {
   void note_seen(std::uint32_t seq, double t);
   bool seen(std::uint32_t seq, double t) const;
   const Entry& derive_base() const;
+  const Entry* derive_from(double& step) const;
   glm::dvec3 extrap_velocity();
   glm::dvec3 extrap_omega();
   FilteredPose interpolate(const Entry& a, const Entry& b, double tau) const;

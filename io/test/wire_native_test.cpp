@@ -45,21 +45,7 @@ std::string hex(std::span<const std::uint8_t> b) {
 }
 
 PoseMessage sample_pose() {
-  PoseMessage m;
-  m.frame = PoseMessage::Frame::Geodetic;
-  m.position = {37.6189, -122.375, 120.5};
-  m.heading_deg = 280.0;
-  m.pitch_deg = 3.5;
-  m.roll_deg = -10.0;
-  m.has_rates = true;
-  m.body_rates_dps = {1.0, -0.5, 2.0};
-  m.has_velocity = true;
-  m.velocity_mps = {-60.0, 10.0, 1.5};
-  m.has_sequence = true;
-  m.sequence = 42;
-  m.has_sender_time = true;
-  m.sender_time_s = 12.5;
-  return m;
+  return wire_test::with_every_field(wire_test::sample_geodetic_pose({37.6189, -122.375, 120.5}), 12.5);
 }
 
 TEST(WireCrc32, CheckValue) {

@@ -46,6 +46,31 @@ inline PoseMessage random_pose(std::mt19937_64& rng, bool geodetic) {
   return m;
 }
 
+// A geodetic pose at `position` (lat, lon, alt) with a fixed attitude and
+// body rates, the codec tests' worked example.
+inline PoseMessage sample_geodetic_pose(const glm::dvec3& position) {
+  PoseMessage m;
+  m.frame = PoseMessage::Frame::Geodetic;
+  m.position = position;
+  m.heading_deg = 280.0;
+  m.pitch_deg = 3.5;
+  m.roll_deg = -10.0;
+  m.has_rates = true;
+  m.body_rates_dps = {1.0, -0.5, 2.0};
+  return m;
+}
+
+// m with every optional field set: velocity, sequence 42 and sender time.
+inline PoseMessage with_every_field(PoseMessage m, double sender_time_s) {
+  m.has_velocity = true;
+  m.velocity_mps = {-60.0, 10.0, 1.5};
+  m.has_sequence = true;
+  m.sequence = 42;
+  m.has_sender_time = true;
+  m.sender_time_s = sender_time_s;
+  return m;
+}
+
 // Smallest signed difference between two angles, degrees.
 inline double angle_diff(double a, double b) {
   double d = std::fmod(a - b, 360.0);

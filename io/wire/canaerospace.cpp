@@ -37,18 +37,6 @@ bool canaerospace_is_altitude_id(std::uint16_t id) {
   return id == canas_id::kBaroAltitude || id == canas_id::kStdAltitude || id == canas_id::kTrueAltitude;
 }
 
-const char* canas_reject_name(CanAsReject r) {
-  switch (r) {
-    case CanAsReject::NotClassicFrame: return "NotClassicFrame";
-    case CanAsReject::UnknownId: return "UnknownId";
-    case CanAsReject::WrongDlc: return "WrongDlc";
-    case CanAsReject::WrongNode: return "WrongNode";
-    case CanAsReject::WrongDataType: return "WrongDataType";
-    case CanAsReject::NonFinite: return "NonFinite";
-  }
-  return "Unknown";
-}
-
 std::optional<CanAerospaceValue> decode_canaerospace(const CanFrame& frame, CanAerospaceStats& stats,
                                                      const CanAerospaceOptions& options) {
   ++stats.frames;

@@ -61,7 +61,6 @@ enum class CanAsReject {
   WrongDataType,    // data type not allowed for this id
   NonFinite,        // FLOAT NaN or Inf
 };
-const char* canas_reject_name(CanAsReject r);
 
 struct CanAerospaceOptions {
   std::optional<std::uint8_t> node_id;  // accept only this node when set

@@ -24,6 +24,26 @@ constexpr std::uint8_t kTimestampValid = 1u << 2;
 // Entity Control byte 4, bit 2: attached to a parent (position is relative).
 constexpr std::uint8_t kEntityAttached = 1u << 2;
 
+// The checks every datagram's first packet passes, in this order: datagram
+// size, opcode, packet size (0 is Truncated, any other wrong size
+// `wrong_size`), major version, byte-swap magic. The byte order, or nullopt
+// with `reject` set.
+std::optional<Order> check_first_packet(std::span<const std::uint8_t> data, std::uint8_t opcode,
+                                        std::size_t packet_size, Reject wrong_size, std::optional<Reject>& reject) {
+  const std::size_t n = data.size();
+  const std::uint8_t* p = data.data();
+  if (n < packet_size) reject = Reject::TooShort;
+  else if (n > kCigiMaxDatagram) reject = Reject::TooLong;
+  else if (p[0] != opcode) reject = Reject::UnknownPacket;
+  else if (p[1] == 0) reject = Reject::Truncated;
+  else if (p[1] != packet_size) reject = wrong_size;
+  else if (p[2] != kCigiMajorVersion) reject = Reject::BadVersion;
+  if (reject) return std::nullopt;
+  const std::optional<Order> order = cigi_order_from_magic(p + 6);
+  if (!order) reject = Reject::BadMagic;
+  return order;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> encode_cigi_host_datagram(std::uint32_t host_frame, std::uint32_t ig_mode,
@@ -61,33 +81,11 @@ std::vector<std::uint8_t> encode_cigi_host_datagram(std::uint32_t host_frame, st
 
 DecodeResult decode_cigi_host_datagram(std::span<const std::uint8_t> data) {
   DecodeResult r;
+  // A wrong IG Control size reads as another CIGI version's packet.
+  const auto order = check_first_packet(data, kCigiOpIgControl, kCigiIgControlSize, Reject::BadVersion, r.reject);
+  if (!order) return r;
   const std::size_t n = data.size();
-  if (n < kCigiIgControlSize) {
-    r.reject = Reject::TooShort;
-    return r;
-  }
-  if (n > kCigiMaxDatagram) {
-    r.reject = Reject::TooLong;
-    return r;
-  }
   const std::uint8_t* p = data.data();
-  if (p[0] != kCigiOpIgControl) {
-    r.reject = Reject::UnknownPacket;
-    return r;
-  }
-  if (p[1] == 0) {
-    r.reject = Reject::Truncated;
-    return r;
-  }
-  if (p[2] != kCigiMajorVersion || p[1] != kCigiIgControlSize) {
-    r.reject = Reject::BadVersion;
-    return r;
-  }
-  const std::optional<Order> order = cigi_order_from_magic(p + 6);
-  if (!order) {
-    r.reject = Reject::BadMagic;
-    return r;
-  }
   const Order o = *order;
   r.byte_swapped = (o != bytes::kHostOrder);
   const std::uint32_t host_frame = bytes::load_u32(p + 8, o);
@@ -166,32 +164,9 @@ std::array<std::uint8_t, kCigiStartOfFrameSize> encode_cigi_start_of_frame(
 
 StartOfFrameResult decode_cigi_start_of_frame(std::span<const std::uint8_t> data) {
   StartOfFrameResult r;
-  if (data.size() < kCigiStartOfFrameSize) {
-    r.reject = Reject::TooShort;
-    return r;
-  }
-  if (data.size() > kCigiMaxDatagram) {
-    r.reject = Reject::TooLong;
-    return r;
-  }
+  const auto order = check_first_packet(data, kCigiOpStartOfFrame, kCigiStartOfFrameSize, Reject::Truncated, r.reject);
+  if (!order) return r;
   const std::uint8_t* p = data.data();
-  if (p[0] != kCigiOpStartOfFrame) {
-    r.reject = Reject::UnknownPacket;
-    return r;
-  }
-  if (p[1] != kCigiStartOfFrameSize) {
-    r.reject = Reject::Truncated;
-    return r;
-  }
-  if (p[2] != kCigiMajorVersion) {
-    r.reject = Reject::BadVersion;
-    return r;
-  }
-  const std::optional<Order> order = cigi_order_from_magic(p + 6);
-  if (!order) {
-    r.reject = Reject::BadMagic;
-    return r;
-  }
   const Order o = *order;
   CigiStartOfFrame s;
   s.ig_status = p[4];

@@ -181,7 +181,7 @@ CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::option
 
 std::string default_scenario_file() {
   if (auto dir = gl::installed_data_dir("scenarios", "default.json"); !dir.empty()) return dir + "/default.json";
-  return std::string(IG_SOURCE_DIR) + "/scenarios/default.json";
+  return "scenarios/default.json";  // relative to the working directory: no source path is compiled in
 }
 
 }  // namespace ig::app

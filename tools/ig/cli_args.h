@@ -92,8 +92,8 @@ int parse_positive_int(const std::string& flag, const std::string& text);
 double parse_double(const std::string& flag, const std::string& text);
 
 // ig serve's config when none is given: the installed scenarios/default.json
-// (PREFIX/share/ig/scenarios), else the one beside the build's binary, else
-// the source tree's.
+// (PREFIX/share/ig/scenarios), else the one beside the build's binary
+// (bin/scenarios), else scenarios/default.json in the working directory.
 std::string default_scenario_file();
 
 }  // namespace ig::app

@@ -123,11 +123,7 @@ std::string installed_data_dir(const std::string& name, const std::string& probe
 std::string default_shader_dir() {
   if (const char* env = std::getenv("IG_SHADER_DIR"); env && *env) return env;
   if (auto dir = installed_data_dir("shaders", "sky.vert"); !dir.empty()) return dir;
-#ifdef IG_DEFAULT_SHADER_DIR
-  return IG_DEFAULT_SHADER_DIR;
-#else
-  return "shaders";
-#endif
+  return "shaders";  // relative to the working directory: no build path is compiled in
 }
 
 }  // namespace ig::gl

@@ -57,7 +57,7 @@ class ShaderProgram {
 
 // Directory holding the GLSL files: $IG_SHADER_DIR, else "shaders" beside
 // the executable (build tree), else PREFIX/share/ig/shaders for an installed
-// PREFIX/bin/ig (cmake --install), else the build tree's copy.
+// PREFIX/bin/ig (cmake --install), else "shaders" in the working directory.
 std::string default_shader_dir();
 // A data folder of an installed or built ig: NAME beside the executable or
 // in ../share/ig/NAME, whichever holds the file `probe`; "" when neither.

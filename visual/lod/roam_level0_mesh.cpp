@@ -1,5 +1,7 @@
 #include "lod/roam_level0_mesh.h"
 
+#include "lod/bintree_split.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -30,8 +32,8 @@ float flush_epsilon(const terrain::Heightfield& hf) {
 // left edge = apex-left, right edge = right-apex.
 struct Tri {
   glm::ivec2 v[3];
-  int nb_base = -1, nb_left = -1, nb_right = -1;
-  int child[2] = {-1, -1};  // [0] = (m, apex, left), [1] = (m, right, apex)
+  int base = -1, left = -1, right = -1;  // neighbours across the base, the left and right edges
+  int child = -1;  // first of two consecutive children: (m, apex, left), (m, right, apex)
   float whole_error = -1.0f;  // whole-triangle error, once measured (Level0Options::whole_triangle_error)
 };
 
@@ -45,8 +47,8 @@ class Builder {
     // Root square split along its main diagonal (0,0)-(s,s).
     tris_.push_back(Tri{{{s, 0}, {s, s}, {0, 0}}});
     tris_.push_back(Tri{{{0, s}, {0, 0}, {s, s}}});
-    tris_[0].nb_base = 1;
-    tris_[1].nb_base = 0;
+    tris_[0].base = 1;
+    tris_[1].base = 0;
     leaves_in_ = 2;
     consider(0);
     consider(1);
@@ -55,7 +57,7 @@ class Builder {
       const auto [err, id] = queue_.top();
       if (err <= target) break;
       queue_.pop();
-      if (tris_[id].child[0] >= 0) continue;  // already split by a forced split
+      if (tris_[id].child >= 0) continue;  // already split by a forced split
       split(id);
     }
   }
@@ -127,54 +129,22 @@ class Builder {
     if (e > 0.0f) queue_.push({e, id});
   }
 
-  static void replace_nb(Tri& t, int from, int to) {
-    if (t.nb_base == from) t.nb_base = to;
-    else if (t.nb_left == from) t.nb_left = to;
-    else if (t.nb_right == from) t.nb_right = to;
-  }
-
-  // Makes the two children of x (links to x's outside neighbours done here;
-  // links across x's base are done by the caller).
-  void make_children(int x) {
-    const Tri t = tris_[x];
-    const glm::ivec2 m = (t.v[1] + t.v[2]) / 2;
-    const int c0 = int(tris_.size()), c1 = c0 + 1;
-    Tri a{{m, t.v[0], t.v[1]}};
-    Tri b{{m, t.v[2], t.v[0]}};
-    a.nb_base = t.nb_left;
-    b.nb_base = t.nb_right;
-    a.nb_left = c1;
-    b.nb_right = c0;
-    tris_.push_back(a);
-    tris_.push_back(b);
-    tris_[x].child[0] = c0;
-    tris_[x].child[1] = c1;
-    if (t.nb_left >= 0) replace_nb(tris_[t.nb_left], x, c0);
-    if (t.nb_right >= 0) replace_nb(tris_[t.nb_right], x, c1);
-    if (inside(t)) leaves_in_ += (inside(tris_[c0]) ? 1 : 0) + (inside(tris_[c1]) ? 1 : 0) - 1;
-  }
-
+  // A diamond split (lod/bintree_split.h) that keeps the count of leaves
+  // inside the DEM and queues the new triangles by their error.
   void split(int x) {
-    if (tris_[x].child[0] >= 0) return;
-    int y = tris_[x].nb_base;
-    if (y >= 0 && tris_[y].nb_base != x) {
-      split(y);  // forced split: afterwards x's base neighbour is y's child facing x
-      y = tris_[x].nb_base;
-    }
-    make_children(x);
-    const int x0 = tris_[x].child[0], x1 = tris_[x].child[1];
-    if (y >= 0) {
-      make_children(y);
-      const int y0 = tris_[y].child[0], y1 = tris_[y].child[1];
-      tris_[x0].nb_right = y1;
-      tris_[x1].nb_left = y0;
-      tris_[y0].nb_right = x1;
-      tris_[y1].nb_left = x0;
-      consider(y0);
-      consider(y1);
-    }
-    consider(x0);
-    consider(x1);
+    bintree::split(
+        tris_, x, false, [](bool) {},
+        [this](int p, int c0) {
+          if (inside(tris_[p])) leaves_in_ += (inside(tris_[c0]) ? 1 : 0) + (inside(tris_[c0 + 1]) ? 1 : 0) - 1;
+        },
+        [this](int a, int b) {
+          if (b >= 0) {
+            consider(tris_[b].child);
+            consider(tris_[b].child + 1);
+          }
+          consider(tris_[a].child);
+          consider(tris_[a].child + 1);
+        });
   }
 
   const terrain::Heightfield& hf_;
@@ -317,7 +287,7 @@ Level0Mesh build_level0_mesh(const terrain::Heightfield& hf, const Level0Options
   };
   double max_err = 0.0;
   for (const Tri& t : b.tris()) {
-    if (t.child[0] >= 0 || !b.inside(t)) continue;
+    if (t.child >= 0 || !b.inside(t)) continue;
     if (Builder::splittable(t)) max_err = std::max(max_err, double(b.error_of(t)));
     if (!clip) {
       for (const auto& p : t.v) mesh.indices.push_back(vertex(p));

@@ -1,5 +1,7 @@
 #include "lod/roam_tessellator.h"
 
+#include "lod/bintree_split.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -7,15 +9,6 @@
 #include <string>
 
 namespace ig::lod {
-namespace {
-
-void replace_link(int& a, int& b, int& c, int from, int to) {
-  if (a == from) a = to;
-  else if (b == from) b = to;
-  else if (c == from) c = to;
-}
-
-}  // namespace
 
 RoamTessellator::RoamTessellator(const terrain::Heightfield& hf, double earth_radius_m)
     : hf_(hf), grid_(make_patch_grid(hf.width, hf.height)), heights_(hf),
@@ -66,49 +59,14 @@ void RoamTessellator::evaluate(Tri& t) const {
   t.ratio = float(e / dist);
 }
 
-void RoamTessellator::make_children(int id) {
-  const Tri t = tris_[id];
-  const glm::u16vec2 m((glm::ivec2(t.v[1]) + glm::ivec2(t.v[2])) / 2);
-  const int c0 = int(tris_.size()), c1 = c0 + 1;
-  Tri a, b;
-  a.v[0] = m, a.v[1] = t.v[0], a.v[2] = t.v[1];
-  b.v[0] = m, b.v[1] = t.v[2], b.v[2] = t.v[0];
-  a.base = t.left;
-  b.base = t.right;
-  a.left = c1;
-  b.right = c0;
-  tris_.push_back(a);
-  tris_.push_back(b);
-  tris_[id].child = c0;
-  if (t.left >= 0) {
-    Tri& n = tris_[t.left];
-    replace_link(n.base, n.left, n.right, id, c0);
-  }
-  if (t.right >= 0) {
-    Tri& n = tris_[t.right];
-    replace_link(n.base, n.left, n.right, id, c1);
-  }
-}
-
 void RoamTessellator::split(int x, bool forced) {
-  if (tris_[x].child >= 0) return;
-  int y = tris_[x].base;
-  if (y >= 0 && tris_[y].base != x) {
-    split(y, true);  // the base neighbour is coarser: split it first (a diamond forms)
-    y = tris_[x].base;
-  }
-  ++stats_.splits;
-  if (forced) ++stats_.forced_splits;
-  make_children(x);
-  const int x0 = tris_[x].child, x1 = x0 + 1;
-  if (y >= 0) {
-    make_children(y);
-    const int y0 = tris_[y].child, y1 = y0 + 1;
-    tris_[x0].right = y1;
-    tris_[x1].left = y0;
-    tris_[y0].right = x1;
-    tris_[y1].left = x0;
-  }
+  bintree::split(
+      tris_, x, forced,
+      [this](bool f) {
+        ++stats_.splits;
+        if (f) ++stats_.forced_splits;
+      },
+      [](int, int) {}, [](int, int) {});
 }
 
 void RoamTessellator::refine(int id) {

@@ -78,7 +78,6 @@ class RoamTessellator {
 
   void refine(int id);
   void split(int id, bool forced);
-  void make_children(int id);
   void evaluate(Tri& t) const;
   void emit(int id);
   float error_of(const Tri& t) const;

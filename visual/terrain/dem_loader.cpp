@@ -1,8 +1,10 @@
 // DEM loading for every supported input (GDAL rasters, 16-bit images, .hgt,
 // folders and VRTs through terrain/dem_mosaic.h): one read path, then the
-// shared nodata fill, flip and statistics. Over 500 lines because each
-// format's checks name the file and the reason here, next to the read.
+// shared nodata fill, flip and statistics. Each format's checks name the
+// file and the reason next to the read; images are read in
+// terrain/dem_image_loader.cpp.
 #include "terrain/dem_loader.h"
+#include "terrain/dem_image_loader.h"
 #include "terrain/dem_mosaic.h"
 #include "terrain/gdal_support.h"
 #include "terrain/gdal_tile_reader.h"
@@ -17,12 +19,9 @@
 #include <ogr_srs_api.h>
 
 #include <GeographicLib/Ellipsoid.hpp>
-#include <OpenImageIO/imageio.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cctype>
 #include <cerrno>
 #include <cfloat>
@@ -43,8 +42,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::int64_t kMaxSide = 65537;
-constexpr std::int64_t kMaxSamples = std::int64_t{1} << 30;
 constexpr std::uintmax_t kHgt1201Bytes = 2ull * 1201 * 1201;  // 2 884 802
 constexpr std::uintmax_t kHgt3601Bytes = 2ull * 3601 * 3601;  // 25 934 402
 constexpr float kSrtmVoid = -32768.0f;
@@ -54,20 +51,6 @@ using gdal::one_line;
 std::string lower(std::string s) {
   for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
   return s;
-}
-
-std::string size_text(std::int64_t w, std::int64_t h) {
-  return std::to_string(w) + "x" + std::to_string(h);
-}
-
-// paged: the heights are paged (issue 16), so only the side limit applies.
-void check_size(const std::string& path, std::int64_t w, std::int64_t h, bool paged = false) {
-  if (w < 2 || h < 2)
-    throw DemError(path, "raster size " + size_text(w, h) +
-                             " is too small (a DEM needs at least 2x2 samples)");
-  if (w > kMaxSide || h > kMaxSide || (w * h > kMaxSamples && !paged))
-    throw DemError(path, "raster size " + size_text(w, h) +
-                             " is too large (limit 65537 per side and 2^30 samples)");
 }
 
 void flip_rows(std::vector<float>& h, int w, int ht) {
@@ -158,7 +141,7 @@ void read_whole_heights(Heightfield& hf, GDALRasterBandH band, const std::string
   if (valid == 0)
     throw DemError(path, "all " + std::to_string(n) + " samples are nodata");
   // The void mask (a byte per sample, 420 MB for 20481^2) only when there
-  // are voids, so a void-free DEM's load peaks at its heights (issue 16).
+  // are voids, so a void-free DEM's load peaks at its heights.
   std::vector<std::uint8_t> state;
   if (valid < n) {
     state.resize(n);
@@ -209,7 +192,7 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
     throw DemError(path, "has " + std::to_string(bands) +
                              " raster bands; a DEM must have exactly one");
   const std::int64_t w64 = GDALGetRasterXSize(h), h64 = GDALGetRasterYSize(h);
-  // Paged when the float heights exceed the memory budget (issue 16).
+  // Paged when the float heights exceed the memory budget.
   const std::size_t budget = std::size_t(std::max(opts.memory_budget_mb, 1)) << 20;
   const bool paged = w64 > 0 && h64 > 0 && std::uint64_t(w64) * std::uint64_t(h64) * sizeof(float) > budget;
   check_size(path, w64, h64, paged);
@@ -317,118 +300,6 @@ Heightfield load_with_gdal(const std::string& path, const DemLoadOptions& opts,
   return hf;
 }
 
-// --------------------------------------------------------- OpenImageIO ---
-
-const char* kImageEncodings =
-    "supported image encodings: png16 (16-bit grayscale), terrain-rgb (8-bit RGB/RGBA "
-    "Mapbox terrain-RGB); other rasters load through GDAL";
-
-Heightfield load_with_oiio(const std::string& path, const DemLoadOptions& opts,
-                           std::string encoding) {
-  if (opts.vertical_datum == "ellipsoid")
-    throw DemError(path, "vertical_datum \"ellipsoid\" needs a georeferenced DEM (read through GDAL), not an image");
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);  // never premultiply RGB by alpha
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) {
-    const std::string msg = one_line(OIIO::geterror());
-    throw DemError(path, "not a recognised raster format" +
-                             (msg.empty() ? std::string() : " (" + msg + ")"));
-  }
-  const OIIO::ImageSpec spec = in->spec();
-  const int nch = spec.nchannels;
-  const OIIO::TypeDesc fmt = spec.format;
-  const bool is16 = fmt == OIIO::TypeDesc::UINT16 || fmt == OIIO::TypeDesc::INT16;
-  const bool is8 = fmt == OIIO::TypeDesc::UINT8;
-  const std::string layout = std::to_string(nch) + "-channel " + std::string(fmt.c_str());
-
-  if (encoding == "auto") {
-    if (is16 && (nch == 1 || nch == 2))
-      encoding = "png16";
-    else if (is8 && (nch == 3 || nch == 4))
-      encoding = "terrain-rgb";
-    else if (is8 && (nch == 1 || nch == 2))
-      throw DemError(path, "8-bit grayscale image is not a DEM encoding (" +
-                               std::string(kImageEncodings) + ")");
-    else
-      throw DemError(path, "unsupported image layout " + layout + " (" + kImageEncodings +
-                               ")");
-  } else if (encoding == "png16" && !is16) {
-    throw DemError(path, "png16 needs a 16-bit grayscale image, this is " + layout);
-  } else if (encoding == "terrain-rgb" && !(is8 && nch >= 3)) {
-    throw DemError(path, "terrain-rgb needs an 8-bit RGB or RGBA image, this is " + layout);
-  }
-  if (spec.depth > 1) throw DemError(path, "volume images are not DEMs");
-  check_size(path, spec.width, spec.height);
-  const int w = spec.width, ht = spec.height;
-  const std::size_t n = std::size_t(w) * std::size_t(ht);
-
-  Heightfield hf;
-  hf.width = w;
-  hf.height = ht;
-  hf.source = path;
-  const double spacing = opts.spacing_m.value_or(1.0);
-  hf.spacing_x_m = hf.spacing_y_m = spacing;
-  try {
-    reserve_in_huge_pages(hf.heights, n);  // scattered queries: terrain/huge_pages.h
-    hf.heights.resize(n);
-    if (encoding == "png16") {
-      std::vector<std::uint16_t> raw(n);
-      if (!in->read_image(0, 0, 0, 1, fmt, raw.data())) {
-        const std::string msg = one_line(in->geterror());
-        throw DemError(path, "read failed (truncated or corrupt image?)" +
-                                 (msg.empty() ? std::string() : ": " + msg));
-      }
-      const bool is_signed = fmt == OIIO::TypeDesc::INT16;
-      for (int r = 0; r < ht; ++r) {
-        const std::uint16_t* src = raw.data() + std::size_t(r) * w;
-        float* dst = hf.heights.data() + std::size_t(ht - 1 - r) * w;
-        for (int i = 0; i < w; ++i) {
-          const double v = is_signed ? double(std::int16_t(src[i])) : double(src[i]);
-          dst[i] = float(v * opts.scale + opts.offset);
-        }
-      }
-    } else {  // terrain-rgb
-      std::vector<std::uint8_t> raw(n * 3);
-      if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, raw.data())) {
-        const std::string msg = one_line(in->geterror());
-        throw DemError(path, "read failed (truncated or corrupt image?)" +
-                                 (msg.empty() ? std::string() : ": " + msg));
-      }
-      for (int r = 0; r < ht; ++r) {
-        const std::uint8_t* src = raw.data() + std::size_t(r) * w * 3;
-        float* dst = hf.heights.data() + std::size_t(ht - 1 - r) * w;
-        for (int i = 0; i < w; ++i) {
-          const std::uint32_t code = (std::uint32_t(src[3 * i]) << 16) |
-                                     (std::uint32_t(src[3 * i + 1]) << 8) | src[3 * i + 2];
-          dst[i] = float(-10000.0 + double(code) * 0.1);
-        }
-      }
-    }
-  } catch (const std::bad_alloc&) {
-    throw DemError(path, "out of memory for a " + size_text(w, ht) + " grid");
-  }
-  for (float v : hf.heights)
-    if (!std::isfinite(v))
-      throw DemError(path, "decoded heights are not finite (check --scale / --offset)");
-  hf.finalize_stats();
-  return hf;
-}
-
-// ----------------------------------------------------------------- JSON ---
-
-// A number as ig info has always written it: integral values as integers,
-// a float by its own shortest decimal (not its double's 17 digits), and
-// null when not finite.
-template <typename T>
-nlohmann::ordered_json json_number(T v) {
-  if (!std::isfinite(double(v))) return nullptr;
-  if (double(v) == std::trunc(double(v)) && std::fabs(double(v)) < 9.0e15) return std::int64_t(v);
-  char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  return std::strtod(std::string(buf, res.ptr).c_str(), nullptr);
-}
-
 }  // namespace
 
 DemError::DemError(const std::string& path, const std::string& reason)
@@ -508,48 +379,6 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts) {
     throw DemError(path, "truncated or wrong-size SRTM .hgt: " + std::to_string(bytes) +
                              " bytes, expected 2884802 (1201x1201) or 25934402 (3601x3601)");
   return load_with_gdal(path, opts, is_hgt);
-}
-
-std::string dem_info_json(const Heightfield& hf) {
-  nlohmann::ordered_json o;
-  o["width"] = hf.width;
-  o["height"] = hf.height;
-  o["spacing_x_m"] = json_number(hf.spacing_x_m);
-  o["spacing_y_m"] = json_number(hf.spacing_y_m);
-  o["min_m"] = json_number(hf.min_m);
-  o["max_m"] = json_number(hf.max_m);
-  o["mean_m"] = json_number(hf.mean_m);
-  o["nodata_count"] = hf.nodata_count;
-  if (hf.void_fill) {  // GDAL loads: how the voids were (or would be) filled
-    o["void_fill"] = {{"algorithm", "GDALFillNodata"},
-                      {"max_distance", hf.void_fill->max_distance},
-                      {"smoothing_iterations", hf.void_fill->smoothing_iterations},
-                      {"deep_count", hf.deep_void_count},
-                      {"deep_fill", "layers"}};
-  }
-  o["crs"] = nullptr;
-  if (hf.georef && !hf.georef->crs_name.empty()) o["crs"] = hf.georef->crs_name;
-  o["geographic"] = hf.georef && hf.georef->geographic;
-  o["source"] = hf.source;
-  if (hf.source_tiles > 0) {
-    o["tiles"] = hf.source_tiles;
-    o["reprojected_tiles"] = hf.reprojected_tiles;
-  }
-  if (hf.georef) {
-    const auto& g = hf.georef->grid_to_crs;
-    auto at = [&g](double i, double j) {
-      return nlohmann::ordered_json::array(
-          {json_number(g[0] + i * g[1] + j * g[2]), json_number(g[3] + i * g[4] + j * g[5])});
-    };
-    const double ie = hf.width - 1, je = hf.height - 1;
-    // Corner sample centres, [x, y] in the DEM's CRS (lon, lat for geographic).
-    o["corners"] = {{"sw", at(0, 0)}, {"se", at(ie, 0)}, {"nw", at(0, je)}, {"ne", at(ie, je)}};
-    const auto [west, south, east, north] = *hf.crs_bounds();
-    o["bounds"] = {{"west", json_number(west)}, {"south", json_number(south)}, {"east", json_number(east)},
-                   {"north", json_number(north)}};
-  }
-  // One line; invalid UTF-8 in a path or CRS name replaced, not thrown.
-  return o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 }  // namespace ig::terrain

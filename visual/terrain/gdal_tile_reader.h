@@ -3,7 +3,7 @@
 // south row first, decoded as the whole-array load does (band scale /
 // offset and vertical unit applied to valid samples; voids as in
 // terrain/dem_loader.h). Used by the paged loader for its pass over the
-// source and by the tile cache for every page-in (issue 16). Owns its own
+// source and by the tile cache for every page-in. Owns its own
 // dataset handle; not thread-safe (the tile cache calls it on one thread at
 // a time). Internal to ig_terrain.
 //

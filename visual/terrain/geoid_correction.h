@@ -1,6 +1,6 @@
 #pragma once
-// Ellipsoidal DEM heights to heights above the EGM96 geoid (issue 16,
-// heights and datums; docs/terrain-data.md "Vertical datum"). The IG works
+// Ellipsoidal DEM heights to heights above the EGM96 geoid
+// (docs/terrain-data.md "Vertical datum"). The IG works
 // in heights above mean sea level, as CIGI and FGNetFDM altitudes are; SRTM
 // heights are above EGM96 already, but some DEMs (lidar, GNSS surveys) give
 // heights above the WGS 84 ellipsoid, 20-40 m off over the Sierra. With

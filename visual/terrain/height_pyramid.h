@@ -14,7 +14,7 @@
 // A level-k node (i, j) covers cells [i * 2^k, min((i+1) * 2^k, cells_x()))
 // in x, and the same in y.
 //
-// Compact storage (issue 16: terrain beyond a memory budget): levels 0 and 1
+// Compact storage (terrain beyond a memory budget): levels 0 and 1
 // are not stored, their nodes are read from the heights (exact: 2 x 2 and
 // 3 x 3 samples, which the ray cast reads next anyway). Levels >= 2 are
 // stored as 16-bit min/max quantised over the whole height range, the

@@ -1,6 +1,6 @@
 #pragma once
 // A coarse copy of a heightfield for what must see the whole DEM at once
-// when the DEM is larger than one GL texture (issue 16): the height texture
+// when the DEM is larger than one GL texture: the height texture
 // outside the full-resolution window, and Level0's mesh. Every step-th
 // sample, not an average, so each overview sample IS a DEM sample: a mesh
 // built on the overview has vertices on the DEM's own heights.

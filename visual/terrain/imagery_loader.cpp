@@ -197,7 +197,7 @@ Imagery load_imagery(const Heightfield& hf, const std::string& path, int max_sid
     const double per_x = (b[2] - b[0]) / std::abs(suggested[1]), per_y = (b[3] - b[1]) / std::abs(suggested[5]);
     double want_x = std::max(double(std::lround(per_x)), double(hf.width));
     double want_y = std::max(double(std::lround(per_y)), double(hf.height));
-    if (want_x <= max_side && want_y <= max_side) {  // one texture, as before issue 16's window
+    if (want_x <= max_side && want_y <= max_side) {  // fits one texture
       out.width = int(want_x);
       out.height = int(want_y);
     } else {

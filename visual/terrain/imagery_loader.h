@@ -3,9 +3,9 @@
 // georeferenced image (GeoTIFF ...) of any size, extent and CRS is warped
 // onto the DEM's footprint (its outer sample edges, in the DEM's CRS), so
 // texture coordinate (s + 0.5) / dem_size lands on sample s as the shaders
-// expect; an image without georeferencing is taken to span the DEM exactly
-// (the old behaviour). Georeferenced imagery finer than the texture limit is
-// paged at full resolution (issue 16): tiles are read on demand from a GDAL
+// expect; an image without georeferencing is taken to span the DEM exactly.
+// Georeferenced imagery finer than the texture limit is paged at full
+// resolution: tiles are read on demand from a GDAL
 // warped VRT onto the footprint (the same extent, size, bilinear resampling
 // and destination alpha as the in-memory warp of imagery that fits) into an
 // RgbTileCache within a byte budget (for the scene's imagery window,
@@ -25,7 +25,7 @@
 
 namespace ig::terrain {
 
-// Full-resolution imagery beyond the texture limit, paged (issue 16).
+// Full-resolution imagery beyond the texture limit, paged.
 struct PagedImagery {
   // full_width() x full_height() pixels, row 0 = south; uncovered pixels
   // grey (128), as in the one-texture image.

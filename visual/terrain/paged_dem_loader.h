@@ -1,6 +1,6 @@
 #pragma once
 // The paged load of a GDAL DEM whose float heights exceed the memory budget
-// (issue 16; docs/terrain-data.md "Paged heights"). One pass over the
+// (docs/terrain-data.md "Paged heights"). One pass over the
 // source in strips of one tile row (page_tile rows, full width) computes
 // what stays resident: the statistics, the overview (every step-th sample,
 // step the smallest that makes it at most 4097 a side) and the compact

@@ -4,7 +4,7 @@
 // size: sample (i, j) always lives at slot (i mod size, j mod size), so a
 // move only fetches the rows and columns that scrolled in and never copies
 // what stays. Used by the height window texture (render/height_window_texture.h)
-// for DEMs larger than one GL texture (issue 16). No GL here.
+// for DEMs larger than one GL texture. No GL here.
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-// The overview of a DEM beyond one texture (issue 16): every step-th sample,
+// The overview of a DEM beyond one texture: every step-th sample,
 // so each overview sample is the DEM sample at the same place, and the step
 // is the smallest that fits the overview in the given side.
 

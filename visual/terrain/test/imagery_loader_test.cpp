@@ -92,7 +92,7 @@ void expect_box_mean_overview(const ig::terrain::Imagery& img, const std::vector
       }
 }
 
-// Beyond the texture limit (issue 16): the full resolution is paged from a
+// Beyond the texture limit: the full resolution is paged from a
 // warped VRT and every pixel equals the one-texture (in-memory) warp's, with
 // a budget that forces evictions; the overview is its step x step box mean.
 TEST(ImageryLoader, ImageBeyondTheLimitIsPagedWithTheInMemoryPixelsAndABoxMeanOverview) {

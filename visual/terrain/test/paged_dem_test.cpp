@@ -1,4 +1,4 @@
-// Paged heights (issue 16; terrain/paged_dem_loader.h): a 1025^2 GeoTIFF
+// Paged heights (terrain/paged_dem_loader.h): a 1025^2 GeoTIFF
 // made at test time, loaded whole and with a 1 MB budget (paged in 64^2
 // tiles), gives the same samples, statistics, overview, pyramid, ray casts
 // and host queries.
