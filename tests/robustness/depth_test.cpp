@@ -1,4 +1,4 @@
-// Depth precision (issue 8, item 2): reversed-Z into a 32-bit float depth
+// Depth precision: reversed-Z into a 32-bit float depth
 // buffer, near 0.1 m, far 300 km. Two flat terrains 1 m apart, seen 10 km
 // away, are drawn into the same frame (real renders, read back): the upper
 // one must win at every pixel whichever is drawn first (no z-fighting). The

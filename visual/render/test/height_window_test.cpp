@@ -1,4 +1,4 @@
-// Height window texture (issue 16): a small toroidally addressed window,
+// Height window texture: a small toroidally addressed window,
 // moved along a path with small steps, diagonal steps, seam crossings,
 // clamping at the DEM's edges and jumps, holds after every move exactly the
 // heights the full-DEM texture holds at the same samples, and each move

@@ -1,4 +1,4 @@
-// Imagery window texture (issue 16): a small wrap-around window over
+// Imagery window texture: a small wrap-around window over
 // full-resolution imagery (2 pixels a DEM sample) paged through a tile
 // cache, moved along a path of small, diagonal, seam-crossing, clamped and
 // jumping steps, holds after every move exactly the pixels a full upload of
