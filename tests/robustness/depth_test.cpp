@@ -1,4 +1,4 @@
-// Depth precision (issue 8, item 2): reversed-Z into a 32-bit float depth
+// Depth precision: reversed-Z into a 32-bit float depth
 // buffer, near 0.1 m, far 300 km. Two flat terrains 1 m apart, seen 10 km
 // away, are drawn into the same frame (real renders, read back): the upper
 // one must win at every pixel whichever is drawn first (no z-fighting). The
@@ -9,6 +9,7 @@
 
 #include <cstdio>
 
+#include "gl/frame_state.h"
 #include "robustness_support.h"
 
 namespace {
@@ -39,12 +40,11 @@ TwoSurfaces render_pair(double separation_m, bool lower_first, const Camera& cam
   rig.render(camera);  // clears, draws the first surface and the sky
   // The second surface into the same colour and depth, with the frame's depth test.
   rig.target().bind();
-  glDepthFunc(GL_GREATER);
-  glDepthMask(GL_TRUE);
+  ig::gl::use_frame_depth_test();
   const Camera local = second_scene.local_camera(camera);
   second->update(local);
   second->draw(local, rig.target());
-  glFinish();
+  ig::gl::finish();
   const auto depth = rig.target().read_depth();
   const auto rgba = rig.target().read_rgba();
 
@@ -87,11 +87,8 @@ TEST(DepthPrecision, FrameUsesReversedZIntoAFloatDepthBuffer) {
   const auto hf = robustness::flat_terrain(17, 10.0, 0.0f);
   robustness::Rig rig(hf, "reference", kW, kH);
   rig.render(robustness::camera_at({80, 80, 50}, 0, -45));
-  GLint format = 0, clip_depth = 0;
-  glGetTextureLevelParameteriv(rig.target().depth_texture(), 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-  glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth);
-  EXPECT_EQ(format, GL_DEPTH_COMPONENT32F);
-  EXPECT_EQ(clip_depth, GL_ZERO_TO_ONE);
+  EXPECT_TRUE(ig::gl::is_float_depth(rig.target().depth_texture()));
+  EXPECT_TRUE(ig::gl::clip_depth_zero_to_one());
   // Reversed: the near plane maps to 1, the far plane to 0, and 10 km vs
   // 10 km - 1 m differ by many float steps.
   Camera c = far_camera(-90);

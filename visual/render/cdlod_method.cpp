@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "gl/uniform.h"
+
 namespace ig::render {
 
 namespace {
@@ -42,9 +44,11 @@ std::vector<std::string> CdlodMethod::column_names() const {
   return {"nodes_drawn", "quarters_drawn", "lod_min", "lod_max"};
 }
 
-void CdlodMethod::update(const Camera& camera) {
+void CdlodMethod::update(const Camera& camera) { areas_ = select(camera); }
+
+std::vector<lod::CdlodArea> CdlodMethod::select(const Camera& camera) const {
   const Frustum frustum = frustum_of(camera);
-  areas_ = lod::cdlod_select(tree_, ranges_, camera.position, [&](const glm::dvec3& lo, const glm::dvec3& hi) {
+  return lod::cdlod_select(tree_, ranges_, camera.position, [&](const glm::dvec3& lo, const glm::dvec3& hi) {
     return frustum.intersects_box(lo - camera.position, hi - camera.position);
   });
 }
@@ -62,8 +66,8 @@ MethodFrameStats CdlodMethod::draw(const Camera& camera, const gl::RenderTarget&
       start[size_t(l)] = float(ranges_.morph_start(l));
       end[size_t(l)] = float(ranges_.morph_end(l));
     }
-    glProgramUniform1fv(program_.id(), program_.location("u_morph_start"), kMaxLods, start.data());
-    glProgramUniform1fv(program_.id(), program_.location("u_morph_end"), kMaxLods, end.data());
+    gl::Uniform(program_, "u_morph_start").set(start.data(), kMaxLods);
+    gl::Uniform(program_, "u_morph_end").set(end.data(), kMaxLods);
     program_.set("u_top_lod", ranges_.top_lod);
     // The eye as a whole sample plus the rest (in double, then float).
     const glm::ivec2 eye_sample(int(std::floor(camera.position.x / hf.spacing_x_m)),
@@ -72,11 +76,11 @@ MethodFrameStats CdlodMethod::draw(const Camera& camera, const gl::RenderTarget&
     program_.set("u_eye_frac", glm::vec3(float(camera.position.x - eye_sample.x * hf.spacing_x_m),
                                          float(camera.position.y - eye_sample.y * hf.spacing_y_m),
                                          float(camera.position.z)));
-    const GLint loc_origin = program_.location("u_origin"), loc_lod = program_.location("u_lod");
+    const gl::Uniform origin(program_, "u_origin"), node_lod(program_, "u_lod");
     for (const lod::CdlodArea& a : areas_) {
       const lod::ChunkNode& n = tree_.node(a.node);
-      glProgramUniform2i(program_.id(), loc_origin, n.i0, n.j0);
-      glProgramUniform1i(program_.id(), loc_lod, a.lod);
+      origin.set(glm::ivec2(n.i0, n.j0));
+      node_lod.set(a.lod);
       if (a.quadrant < 0) {
         mesh_.draw();
         stats.triangles += n.triangles;

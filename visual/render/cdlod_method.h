@@ -16,10 +16,10 @@
 #include <array>
 #include <vector>
 
+#include "gl/grid_mesh.h"
 #include "gl/shader_program.h"
 #include "lod/cdlod_selection.h"
 #include "lod/chunk_quadtree.h"
-#include "render/grid_mesh.h"
 #include "render/terrain_method.h"
 
 namespace ig::render {
@@ -45,6 +45,8 @@ class CdlodMethod final : public TerrainMethod {
 
   const lod::ChunkQuadtree& tree() const { return tree_; }
   const lod::CdlodRanges& ranges() const { return ranges_; }
+  // One frame's selection: the nodes and node quarters to draw, each with its LOD.
+  std::vector<lod::CdlodArea> select(const Camera& camera) const;
   const std::vector<lod::CdlodArea>& areas() const { return areas_; }
 
  private:
@@ -54,8 +56,8 @@ class CdlodMethod final : public TerrainMethod {
   lod::ChunkQuadtree tree_;
   lod::CdlodRanges ranges_;
   std::vector<std::array<int, 4>> quadrant_triangles_;  // per node
-  GridMesh mesh_;  // the one Q x Q grid, drawn whole or a quarter at a time
-  std::vector<lod::CdlodArea> areas_;
+  gl::GridMesh mesh_;  // the one Q x Q grid, drawn whole or a quarter at a time
+  std::vector<lod::CdlodArea> areas_;  // the last update's selection
 };
 
 }  // namespace ig::render

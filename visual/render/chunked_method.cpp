@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <stdexcept>
-#include <string>
-
-#include "gl/work_counters.h"
 
 namespace ig::render {
 
@@ -20,12 +16,7 @@ constexpr float kSkirtMarginM = 1.0f;
 }  // namespace
 
 ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
-    : scene_(scene),
-      tau_px_(tau_px),
-      program_(shader_dir, "chunked.vert", scene.shading_stages({"terrain.frag"})),
-      tree_(scene.heightfield()) {
-  if (!(tau_px > 0.0) || !std::isfinite(tau_px))
-    throw std::invalid_argument("chunked: tau_px must be a positive number of pixels, got " + std::to_string(tau_px));
+    : TauMethod("chunked", scene, shader_dir, "chunked.vert", tau_px), tree_(scene.heightfield()) {
   // Vertices (x, y, skirt side + 1 or 0, pad): the surface grid, then each
   // side's edge again as the skirt's lower edge.
   std::vector<std::int16_t> verts;
@@ -41,7 +32,7 @@ ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shade
     for (int i = 0; i < Q; ++i)
       idx.insert(idx.end(), {surface(i, j), surface(i + 1, j), surface(i + 1, j + 1), surface(i, j),
                              surface(i + 1, j + 1), surface(i, j + 1)});
-  surface_indices_ = GLsizei(idx.size());
+  surface_indices_ = int(idx.size());
   for (int side = 0; side < 4; ++side) {
     auto edge = [side](int t) {
       switch (side) {
@@ -63,42 +54,38 @@ ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shade
         idx.insert(idx.end(), {a, b, low[t + 1], a, low[t + 1], low[t]});
     }
   }
-  total_indices_ = GLsizei(idx.size());
-
-  vbo_ = gl::create_buffer(verts);
-  ibo_ = gl::create_buffer(idx);
-  vao_ = gl::create_vertex_array();
-  glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, 4 * sizeof(std::int16_t));
-  glVertexArrayElementBuffer(vao_.id(), ibo_.id());
-  gl::vertex_attrib_int(vao_, 0, 2, GL_SHORT, 0, 0);
-  gl::vertex_attrib_int(vao_, 1, 1, GL_SHORT, 2 * sizeof(std::int16_t), 0);
+  mesh_ = gl::StaticMesh(verts, 4, {{2, 0}, {1, 2}});
+  mesh_.add_indices(idx);
 }
 
 std::vector<std::string> ChunkedMethod::column_names() const {
   return {"chunks_drawn", "level_min", "level_max", "skirt_triangles"};
 }
 
-void ChunkedMethod::set_viewport(int, int height_px) {
-  if (height_px > 0) viewport_h_ = height_px;
-}
-
-void ChunkedMethod::select(int k, const Camera& camera, const Frustum& frustum, double ppr) {
-  const lod::ChunkNode& n = tree_.node(k);
+namespace {
+// Refines from node k while its projected error exceeds tau_px, culling
+// against the frustum; appends the chunks to draw.
+void select_from(const lod::ChunkQuadtree& tree, int k, const Camera& camera, const Frustum& frustum, double ppr,
+                 double tau_px, std::vector<ChunkedMethod::DrawnChunk>& out) {
+  const lod::ChunkNode& n = tree.node(k);
   glm::dvec3 lo, hi;
-  tree_.box(n, lo, hi);
+  tree.box(n, lo, hi);
   if (!frustum.intersects_box(lo - camera.position, hi - camera.position)) return;
   const double d = lod::box_distance(camera.position, lo, hi);
-  if (!n.leaf() && n.error_m / std::max(d, camera.near_m) * ppr > tau_px_) {
+  if (!n.leaf() && n.error_m / std::max(d, camera.near_m) * ppr > tau_px) {
     for (int c : n.children)
-      if (c >= 0) select(c, camera, frustum, ppr);
+      if (c >= 0) select_from(tree, c, camera, frustum, ppr, tau_px, out);
     return;
   }
-  drawn_.push_back({k, d, 0.0f});
+  out.push_back({k, d, 0.0f});
 }
+}  // namespace
 
-void ChunkedMethod::update(const Camera& camera) {
-  drawn_.clear();
-  select(0, camera, frustum_of(camera), pixels_per_radian(camera, viewport_h_));
+void ChunkedMethod::update(const Camera& camera) { drawn_ = select(camera); }
+
+std::vector<ChunkedMethod::DrawnChunk> ChunkedMethod::select(const Camera& camera) const {
+  std::vector<DrawnChunk> drawn;
+  select_from(tree_, 0, camera, frustum_of(camera), viewport_pixels_per_radian(camera), tau_px_, drawn);
 
   // Skirt depth. A crack lies between this chunk's edge and a coarser
   // neighbour's edge over the same segment. Both edges interpolate DEM
@@ -112,31 +99,28 @@ void ChunkedMethod::update(const Camera& camera) {
   // coarser chunk's own skirt covers the case where its edge is the upper one:
   // the finer edge interpolates samples of its edge, never below its min_h.)
   std::vector<float> coarse_error(size_t(tree_.depth()) + 2, 0.0f);  // [k]: max error drawn at levels < k
-  for (const DrawnChunk& d : drawn_) {
+  for (const DrawnChunk& d : drawn) {
     const lod::ChunkNode& n = tree_.node(d.node);
     coarse_error[size_t(n.level) + 1] = std::max(coarse_error[size_t(n.level) + 1], n.own_error_m);
   }
   for (size_t k = 1; k < coarse_error.size(); ++k) coarse_error[k] = std::max(coarse_error[k], coarse_error[k - 1]);
-  for (DrawnChunk& d : drawn_) {
+  for (DrawnChunk& d : drawn) {
     const lod::ChunkNode& n = tree_.node(d.node);
     const float far_coarse = n.level > kLog2Q ? coarse_error[size_t(n.level - kLog2Q)] : 0.0f;
     d.skirt_bottom_m = n.heights.min_m - far_coarse - kSkirtMarginM;
   }
+  return drawn;
 }
 
 MethodFrameStats ChunkedMethod::draw(const Camera& camera, const gl::RenderTarget&) {
-  const auto& hf = scene_.heightfield();
   MethodFrameStats stats;
   long long skirt_triangles = 0;
   int lmin = tree_.depth(), lmax = 0;
   if (!drawn_.empty()) {
     stats.passes = "terrain";
-    program_.use();
-    scene_.bind_common(program_, camera);
-    const GLint loc_origin = program_.location("u_origin"), loc_rel = program_.location("u_origin_rel");
-    const GLint loc_stride = program_.location("u_stride"), loc_sides = program_.location("u_skirt_sides");
-    const GLint loc_bottom = program_.location("u_skirt_bottom");
-    glBindVertexArray(vao_.id());
+    const Placement placement = begin_draw(camera);
+    const gl::Uniform stride(program_, "u_stride"), skirt_sides(program_, "u_skirt_sides");
+    const gl::Uniform skirt_bottom(program_, "u_skirt_bottom");
     for (const DrawnChunk& d : drawn_) {
       const lod::ChunkNode& n = tree_.node(d.node);
       int sides = 0;
@@ -145,14 +129,11 @@ MethodFrameStats ChunkedMethod::draw(const Camera& camera, const gl::RenderTarge
           sides |= 1 << s;
           skirt_triangles += 2LL * n.edge_segments[s];
         }
-      const glm::dvec3 rel = glm::dvec3(n.i0 * hf.spacing_x_m, n.j0 * hf.spacing_y_m, 0.0) - camera.position;
-      glProgramUniform2i(program_.id(), loc_origin, n.i0, n.j0);
-      glProgramUniform3f(program_.id(), loc_rel, float(rel.x), float(rel.y), float(rel.z));
-      glProgramUniform1i(program_.id(), loc_stride, n.stride);
-      glProgramUniform1i(program_.id(), loc_sides, sides);
-      glProgramUniform1f(program_.id(), loc_bottom, d.skirt_bottom_m);
-      glDrawElements(GL_TRIANGLES, sides ? total_indices_ : surface_indices_, GL_UNSIGNED_INT, nullptr);
-      gl::count_draw();
+      place(placement, camera, n.i0, n.j0);
+      stride.set(n.stride);
+      skirt_sides.set(sides);
+      skirt_bottom.set(d.skirt_bottom_m);
+      mesh_.draw(0, 0, sides ? mesh_.index_count(0) : surface_indices_);
       stats.triangles += n.triangles;
       lmin = std::min(lmin, n.level);
       lmax = std::max(lmax, n.level);

@@ -17,14 +17,13 @@
 
 #include <vector>
 
-#include "gl/gl_objects.h"
-#include "gl/shader_program.h"
+#include "gl/static_mesh.h"
 #include "lod/chunk_quadtree.h"
-#include "render/terrain_method.h"
+#include "render/tau_method.h"
 
 namespace ig::render {
 
-class ChunkedMethod final : public TerrainMethod {
+class ChunkedMethod final : public TauMethod {
  public:
   ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
   ChunkedMethod(const ChunkedMethod&) = delete;
@@ -32,34 +31,27 @@ class ChunkedMethod final : public TerrainMethod {
 
   std::string name() const override { return "chunked"; }
   std::vector<std::string> column_names() const override;
-  void set_viewport(int width_px, int height_px) override;
   void update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
-  std::optional<ErrorKnob> knob() const override { return ErrorKnob{"tau_px", "px", tau_px_}; }
   // Max over drawn chunks of (the chunk mesh's own measured error) /
   // max(D, near), in pixels; skirts hang below the surface and add none.
   std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
 
+  // One frame's selection is the chunks to draw, each with its skirt depth.
   struct DrawnChunk {
     int node = 0;
     double distance_m = 0.0;
     float skirt_bottom_m = 0.0f;  // absolute height the skirts reach down to
   };
+  std::vector<DrawnChunk> select(const Camera& camera) const;
   const lod::ChunkQuadtree& tree() const { return tree_; }
   const std::vector<DrawnChunk>& drawn() const { return drawn_; }
 
  private:
-  void select(int node, const Camera& camera, const Frustum& frustum, double ppr);
-
-  const TerrainScene& scene_;
-  double tau_px_;
-  int viewport_h_ = 1024;  // until the first set_viewport()
-  gl::ShaderProgram program_;
   lod::ChunkQuadtree tree_;
-  gl::VertexArray vao_;
-  gl::Buffer vbo_, ibo_;
-  GLsizei surface_indices_ = 0, total_indices_ = 0;
-  std::vector<DrawnChunk> drawn_;
+  gl::StaticMesh mesh_;  // the grid, then each side's skirt
+  int surface_indices_ = 0;
+  std::vector<DrawnChunk> drawn_;  // the last update's selection
 };
 
 }  // namespace ig::render

@@ -2,12 +2,12 @@
 // One view of one frame: LOD update, the method's terrain passes, then the
 // sky into whatever the terrain left uncovered, then the anti-aliasing
 // resolve (multisampled) or post pass (post-filtered). Each stage is timed on the
-// wall clock and closed with glFinish (GL timer queries are not real GPU
+// wall clock and closed with gl::finish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
 
-#include "gl/gl_objects.h"
+#include "gl/post_filter_pass.h"
 #include "gl/render_target.h"
-#include "gl/shader_program.h"
+#include "gl/sky_pass.h"
 #include "gl/work_counters.h"
 #include "render/camera.h"
 #include "render/terrain_method.h"
@@ -37,7 +37,7 @@ class FrameRenderer {
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
   ViewResult render(const Camera& camera, const gl::RenderTarget& target);
-  // Terrain drawn as lines (glPolygonMode GL_LINE) instead of filled; the sky stays filled.
+  // Terrain drawn as lines instead of filled; the sky stays filled.
   void set_wireframe(bool on) { wireframe_ = on; }
   bool wireframe() const { return wireframe_; }
   // Back-face culling while the eye is above the terrain (terrain/back_faces_hidden.h;
@@ -51,11 +51,9 @@ class FrameRenderer {
  private:
   const TerrainScene& scene_;
   TerrainMethod* method_;
-  gl::ShaderProgram sky_;
-  std::string shader_dir_;
-  gl::ShaderProgram edge_aa_;  // made for the first post-filtered target (gl::RenderTarget::post_pass)
+  gl::SkyPass sky_;
+  gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;
-  gl::VertexArray empty_vao_;  // the sky's full-screen triangle needs no vertices
   bool wireframe_ = false;
   bool back_face_culling_ = true;
 };

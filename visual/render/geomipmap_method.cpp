@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <string>
-#include <stdexcept>
 
 #include "lod/chunk_quadtree.h"
-#include "gl/work_counters.h"
 
 namespace ig::render {
 
@@ -38,45 +35,36 @@ void strip_box(const terrain::Heightfield& hf, const lod::GeoMipBlock& b, int si
 }  // namespace
 
 GeoMipMapMethod::GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
-    : scene_(scene),
-      tau_px_(tau_px),
-      program_(shader_dir, "terrain_grid.vert", scene.shading_stages({"terrain.frag"})),
-      blocks_(scene.heightfield()) {
-  if (!(tau_px > 0.0) || !std::isfinite(tau_px))
-    throw std::invalid_argument("geomipmap: tau_px must be a positive number of pixels, got " + std::to_string(tau_px));
+    : TauMethod("geomipmap", scene, shader_dir, "terrain_grid.vert", tau_px), blocks_(scene.heightfield()) {
   std::vector<std::int16_t> verts;
   for (int j = 0; j <= N; ++j)
     for (int i = 0; i <= N; ++i) verts.insert(verts.end(), {std::int16_t(i), std::int16_t(j)});
-  vbo_ = gl::create_buffer(verts);
-  vao_ = gl::create_vertex_array();
-  glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, 2 * sizeof(std::int16_t));
-  gl::vertex_attrib_int(vao_, 0, 2, GL_SHORT, 0, 0);
-  levels_.assign(blocks_.blocks().size(), 0);
-  distances_.assign(blocks_.blocks().size(), 0.0);
+  mesh_ = gl::StaticMesh(verts, 2, {{2, 0}});
+  selection_.levels.assign(blocks_.blocks().size(), 0);
 }
 
 std::vector<std::string> GeoMipMapMethod::column_names() const {
   return {"blocks_drawn", "blocks_stitched", "level_min", "level_max", "level_mean"};
 }
 
-void GeoMipMapMethod::set_viewport(int, int height_px) {
-  if (height_px > 0) viewport_h_ = height_px;
-}
+void GeoMipMapMethod::update(const Camera& camera) { selection_ = select(camera); }
 
-void GeoMipMapMethod::update(const Camera& camera) {
+GeoMipMapMethod::Selection GeoMipMapMethod::select(const Camera& camera) const {
   const auto& hf = scene_.heightfield();
-  const double ppr = pixels_per_radian(camera, viewport_h_);
+  const double ppr = viewport_pixels_per_radian(camera);
   // Every block's level first (culled ones too): a visible block's stitching
   // depends on its neighbours' levels.
   const auto& blocks = blocks_.blocks();
+  Selection sel;
+  sel.levels.resize(blocks.size());
+  std::vector<double> distances(blocks.size());  // eye to each block's box
   for (size_t k = 0; k < blocks.size(); ++k) {
     glm::dvec3 lo, hi;
     block_box(hf, blocks[k], lo, hi);
-    distances_[k] = lod::box_distance(camera.position, lo, hi);
-    levels_[k] = lod::geomipmap_select_level(blocks[k].error, distances_[k], camera.near_m, ppr, tau_px_);
+    distances[k] = lod::box_distance(camera.position, lo, hi);
+    sel.levels[k] = lod::geomipmap_select_level(blocks[k].error, distances[k], camera.near_m, ppr, tau_px_);
   }
   const Frustum frustum = frustum_of(camera);
-  drawn_.clear();
   for (int by = 0; by < blocks_.blocks_y(); ++by)
     for (int bx = 0; bx < blocks_.blocks_x(); ++bx) {
       const size_t k = size_t(by) * blocks_.blocks_x() + bx;
@@ -86,8 +74,8 @@ void GeoMipMapMethod::update(const Camera& camera) {
       DrawnBlock d;
       d.bx = bx;
       d.by = by;
-      d.config = blocks_.config_of(bx, by, levels_);
-      d.distance_m = distances_[k];
+      d.config = blocks_.config_of(bx, by, sel.levels);
+      d.distance_m = distances[k];
       const auto s = blocks_.stats(bx, by, d.config);
       d.error_m = s.error_m;
       d.triangles = s.triangles;
@@ -100,43 +88,32 @@ void GeoMipMapMethod::update(const Camera& camera) {
         const double strip_distance = std::max(lod::box_distance(camera.position, slo, shi), camera.near_m);
         d.error_per_m = std::max(d.error_per_m, e / strip_distance);
       }
-      drawn_.push_back(d);
+      sel.drawn.push_back(d);
     }
+  return sel;
 }
 
-const GeoMipMapMethod::Indices& GeoMipMapMethod::indices_for(const lod::GeoMipConfig& config) {
+int GeoMipMapMethod::indices_for(const lod::GeoMipConfig& config) {
   auto it = indices_.find(config.key());
   if (it != indices_.end()) return it->second;
   std::vector<std::uint16_t> idx;
   for (const glm::ivec2& c : lod::geomipmap_triangles(config)) idx.push_back(std::uint16_t(c.y * (N + 1) + c.x));
-  Indices ix;
-  ix.count = GLsizei(idx.size());
-  ix.ibo = gl::create_buffer(idx);
-  return indices_.emplace(config.key(), std::move(ix)).first->second;
+  return indices_.emplace(config.key(), mesh_.add_indices(idx)).first->second;
 }
 
 MethodFrameStats GeoMipMapMethod::draw(const Camera& camera, const gl::RenderTarget&) {
-  const auto& hf = scene_.heightfield();
+  const std::vector<DrawnBlock>& drawn = selection_.drawn;
   MethodFrameStats stats;
   int stitched = 0, lmin = lod::kGeoMipLevels, lmax = 0;
   double lsum = 0.0;
-  if (!drawn_.empty()) {
+  if (!drawn.empty()) {
     stats.passes = "terrain";
-    program_.use();
-    scene_.bind_common(program_, camera);
-    const GLint loc_origin = program_.location("u_origin");
-    const GLint loc_rel = program_.location("u_origin_rel");
-    glBindVertexArray(vao_.id());
-    for (const DrawnBlock& d : drawn_) {
+    const Placement placement = begin_draw(camera);
+    for (const DrawnBlock& d : drawn) {
       const lod::GeoMipBlock& b = blocks_.block(d.bx, d.by);
-      const Indices& ix = indices_for(d.config);
-      glVertexArrayElementBuffer(vao_.id(), ix.ibo.id());
-      // Eye-relative block origin in double, then to float (camera-relative rendering).
-      const glm::dvec3 rel = glm::dvec3(b.i0 * hf.spacing_x_m, b.j0 * hf.spacing_y_m, 0.0) - camera.position;
-      glProgramUniform2i(program_.id(), loc_origin, b.i0, b.j0);
-      glProgramUniform3f(program_.id(), loc_rel, float(rel.x), float(rel.y), float(rel.z));
-      glDrawElements(GL_TRIANGLES, ix.count, GL_UNSIGNED_SHORT, nullptr);
-      gl::count_draw();
+      const int indices = indices_for(d.config);
+      place(placement, camera, b.i0, b.j0);
+      mesh_.draw(indices);
       stats.triangles += d.triangles;
       stitched += d.config.stitched();
       lmin = std::min(lmin, d.config.level);
@@ -144,18 +121,18 @@ MethodFrameStats GeoMipMapMethod::draw(const Camera& camera, const gl::RenderTar
       lsum += d.config.level;
     }
   }
-  const double n = double(drawn_.size());
+  const double n = double(drawn.size());
   stats.columns = {{"blocks_drawn", n},
                    {"blocks_stitched", double(stitched)},
-                   {"level_min", drawn_.empty() ? 0.0 : double(lmin)},
+                   {"level_min", drawn.empty() ? 0.0 : double(lmin)},
                    {"level_max", double(lmax)},
-                   {"level_mean", drawn_.empty() ? 0.0 : lsum / n}};
+                   {"level_mean", drawn.empty() ? 0.0 : lsum / n}};
   return stats;
 }
 
 std::optional<double> GeoMipMapMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
   double worst = 0.0;
-  for (const DrawnBlock& d : drawn_) worst = std::max(worst, d.error_per_m);
+  for (const DrawnBlock& d : selection_.drawn) worst = std::max(worst, d.error_per_m);
   return worst * pixels_per_radian(camera, viewport_height_px);
 }
 

@@ -12,14 +12,13 @@
 #include <unordered_map>
 #include <vector>
 
-#include "gl/gl_objects.h"
-#include "gl/shader_program.h"
+#include "gl/static_mesh.h"
 #include "lod/geomipmap_blocks.h"
-#include "render/terrain_method.h"
+#include "render/tau_method.h"
 
 namespace ig::render {
 
-class GeoMipMapMethod final : public TerrainMethod {
+class GeoMipMapMethod final : public TauMethod {
  public:
   GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
   GeoMipMapMethod(const GeoMipMapMethod&) = delete;
@@ -27,10 +26,8 @@ class GeoMipMapMethod final : public TerrainMethod {
 
   std::string name() const override { return "geomipmap"; }
   std::vector<std::string> column_names() const override;
-  void set_viewport(int width_px, int height_px) override;
   void update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
-  std::optional<ErrorKnob> knob() const override { return ErrorKnob{"tau_px", "px", tau_px_}; }
   // Max over the pieces of the drawn blocks of (error of the triangles
   // drawn) / max(distance to the piece, near), in pixels. The pieces: the
   // plain level quads (the level's error, from the block's box) and each
@@ -38,7 +35,6 @@ class GeoMipMapMethod final : public TerrainMethod {
   // under the eye stitched to a coarser neighbour is judged at that edge.
   std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
 
-  // State of the last update, for tests and logs.
   struct DrawnBlock {
     int bx = 0, by = 0;
     lod::GeoMipConfig config;
@@ -47,28 +43,25 @@ class GeoMipMapMethod final : public TerrainMethod {
     int triangles = 0;
     double error_per_m = 0.0;  // max over its pieces of error / max(distance, near)
   };
+  // One frame's selection: every block's level (culled ones too: a visible
+  // block's stitching depends on its neighbours' levels) and the blocks to draw.
+  struct Selection {
+    std::vector<int> levels;
+    std::vector<DrawnBlock> drawn;
+  };
+  Selection select(const Camera& camera) const;
   const lod::GeoMipMapBlocks& blocks() const { return blocks_; }
-  const std::vector<int>& levels() const { return levels_; }  // every block's level
-  const std::vector<DrawnBlock>& drawn() const { return drawn_; }
+  const std::vector<int>& levels() const { return selection_.levels; }  // every block's level
+  const std::vector<DrawnBlock>& drawn() const { return selection_.drawn; }
 
  private:
-  struct Indices {
-    gl::Buffer ibo;
-    GLsizei count = 0;
-  };
-  const Indices& indices_for(const lod::GeoMipConfig& config);
+  // The index list of a configuration in mesh_, built on first use.
+  int indices_for(const lod::GeoMipConfig& config);
 
-  const TerrainScene& scene_;
-  double tau_px_;
-  int viewport_h_ = 1024;  // until the first set_viewport()
-  gl::ShaderProgram program_;
   lod::GeoMipMapBlocks blocks_;
-  gl::VertexArray vao_;
-  gl::Buffer vbo_;
-  std::unordered_map<std::uint32_t, Indices> indices_;
-  std::vector<int> levels_;
-  std::vector<double> distances_;  // eye to each block's box, last update
-  std::vector<DrawnBlock> drawn_;
+  gl::StaticMesh mesh_;  // the block's 33 x 33 vertices
+  std::unordered_map<std::uint32_t, int> indices_;
+  Selection selection_;  // the last update's
 };
 
 }  // namespace ig::render

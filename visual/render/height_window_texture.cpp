@@ -5,7 +5,7 @@
 namespace ig::render {
 
 HeightWindowTexture::HeightWindowTexture(const terrain::Heightfield& hf, int size)
-    : hf_(hf), tex_(hf.width, hf.height, size, {GL_R32F, GL_RED, GL_FLOAT, sizeof(float), 4}, hf.source + ": height window") {}
+    : hf_(hf), tex_(hf.width, hf.height, size, gl::kHeightTexels, hf.source + ": height window") {}
 
 void HeightWindowTexture::prefetch_around(glm::ivec2 centre) const {
   if (!hf_.paged) return;

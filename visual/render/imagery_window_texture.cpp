@@ -18,7 +18,7 @@ ImageryWindowTexture::ImageryWindowTexture(const terrain::Imagery& imagery, int 
       full_h_(imagery.full_height()),
       dem_w_(dem_w),
       dem_h_(dem_h),
-      tex_(full_w_, full_h_, size, {GL_RGB8, GL_RGB, GL_UNSIGNED_BYTE, 3, 1}, what) {}
+      tex_(full_w_, full_h_, size, gl::kImageryTexels, what) {}
 
 long long ImageryWindowTexture::centre_on_sample(glm::ivec2 centre, bool wait) {
   // Sample s is at texture coordinate (s + 0.5) / dem_size, as in the shaders.

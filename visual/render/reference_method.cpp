@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "gl/uniform.h"
+
 namespace ig::render {
 
 ReferenceMethod::ReferenceMethod(const TerrainScene& scene, const std::string& shader_dir, int n)
@@ -22,38 +24,41 @@ ReferenceMethod::ReferenceMethod(const TerrainScene& scene, const std::string& s
     }
 }
 
-void ReferenceMethod::update(const Camera& camera) {
+ReferenceMethod::Selection ReferenceMethod::select(const Camera& camera) const {
   const auto& hf = scene_.heightfield();
   const Frustum frustum = frustum_of(camera);
-  visible_.clear();
+  Selection sel;
   for (int k = 0; k < int(chunks_.size()); ++k) {
     const Chunk& c = chunks_[k];
     const glm::dvec3 lo(c.i0 * hf.spacing_x_m, c.j0 * hf.spacing_y_m, c.min_h);
     const glm::dvec3 hi((c.i0 + c.quads_x) * hf.spacing_x_m, (c.j0 + c.quads_y) * hf.spacing_y_m, c.max_h);
-    if (frustum.intersects_box(lo - camera.position, hi - camera.position)) visible_.push_back(k);
+    if (frustum.intersects_box(lo - camera.position, hi - camera.position)) sel.visible.push_back(k);
   }
+  return sel;
 }
+
+void ReferenceMethod::update(const Camera& camera) { selection_ = select(camera); }
 
 MethodFrameStats ReferenceMethod::draw(const Camera& camera, const gl::RenderTarget&) {
   const auto& hf = scene_.heightfield();
+  const std::vector<int>& visible = selection_.visible;
   MethodFrameStats stats;
-  stats.passes = visible_.empty() ? "" : "terrain";
-  if (!visible_.empty()) {
+  stats.passes = visible.empty() ? "" : "terrain";
+  if (!visible.empty()) {
     program_.use();
     scene_.bind_common(program_, camera);
-    const GLint loc_origin = program_.location("u_origin");
-    const GLint loc_rel = program_.location("u_origin_rel");
-    for (int k : visible_) {
+    const gl::Uniform origin(program_, "u_origin"), origin_rel(program_, "u_origin_rel");
+    for (int k : visible) {
       const Chunk& c = chunks_[k];
       // Eye-relative chunk origin in double, then to float: no precision loss far from the origin.
       const glm::dvec3 rel = glm::dvec3(c.i0 * hf.spacing_x_m, c.j0 * hf.spacing_y_m, 0.0) - camera.position;
-      glProgramUniform2i(program_.id(), loc_origin, c.i0, c.j0);
-      glProgramUniform3f(program_.id(), loc_rel, float(rel.x), float(rel.y), float(rel.z));
+      origin.set(glm::ivec2(c.i0, c.j0));
+      origin_rel.set(glm::vec3(rel));
       mesh_.draw();
       stats.triangles += 2LL * c.quads_x * c.quads_y;
     }
   }
-  stats.columns = {{"chunks_drawn", double(visible_.size())}, {"chunks_total", double(chunks_.size())}};
+  stats.columns = {{"chunks_drawn", double(visible.size())}, {"chunks_total", double(chunks_.size())}};
   return stats;
 }
 

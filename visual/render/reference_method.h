@@ -5,8 +5,8 @@
 
 #include <vector>
 
+#include "gl/grid_mesh.h"
 #include "gl/shader_program.h"
-#include "render/grid_mesh.h"
 #include "render/terrain_method.h"
 
 namespace ig::render {
@@ -21,17 +21,25 @@ class ReferenceMethod final : public TerrainMethod {
   // Every DEM sample is a vertex: no geometric error by construction.
   std::optional<double> error_bound_px(const Camera&, int) const override { return 0.0; }
 
- private:
   struct Chunk {
-    int i0, j0;          // origin sample
+    int i0, j0;            // origin sample
     int quads_x, quads_y;  // real quads (edge chunks are smaller)
     float min_h, max_h;
   };
+  // One frame's selection: the chunks in the view frustum (indices into chunks()).
+  struct Selection {
+    std::vector<int> visible;
+  };
+  Selection select(const Camera& camera) const;
+  const Selection& selection() const { return selection_; }
+  const std::vector<Chunk>& chunks() const { return chunks_; }
+
+ private:
   const TerrainScene& scene_;
   gl::ShaderProgram program_;
-  GridMesh mesh_;
+  gl::GridMesh mesh_;
   std::vector<Chunk> chunks_;
-  std::vector<int> visible_;
+  Selection selection_;
 };
 
 }  // namespace ig::render

@@ -1,17 +1,15 @@
 #pragma once
 // A triangle list of DEM sample indices rebuilt on the CPU every frame (the
-// ROAM and quadtree baselines), uploaded once per frame into an orphaned
-// stream buffer and drawn with shaders/level0.vert and the shared shading.
-
-#include <epoxy/gl.h>
+// ROAM and quadtree baselines), drawn with shaders/level0.vert and the shared
+// shading through a stream buffer (gl/stream_vertices.h).
 
 #include <string>
 #include <vector>
 
 #include <glm/gtc/type_precision.hpp>
 
-#include "gl/gl_objects.h"
 #include "gl/shader_program.h"
+#include "gl/stream_vertices.h"
 #include "render/camera.h"
 #include "render/terrain_method.h"
 #include "render/terrain_scene.h"
@@ -32,9 +30,7 @@ class SampleTriangleStream {
 
  private:
   gl::ShaderProgram program_;
-  gl::VertexArray vao_;
-  gl::Buffer vbo_;
-  GLsizeiptr capacity_ = 0;  // bytes allocated for the buffer
+  gl::StreamVertices stream_;
 };
 
 }  // namespace ig::render

@@ -25,7 +25,7 @@
 #include "lod/look_at_point.h"
 #include "lod/roam_level0_mesh.h"
 #include "options/twolevel_options.h"
-#include "render/grid_mesh.h"
+#include "gl/grid_mesh.h"
 #include "render/terrain_method.h"
 #include "terrain/height_pyramid.h"
 
@@ -112,7 +112,7 @@ class TwoLevelMethod final : public TerrainMethod {
   std::array<lod::IndexRuns, 2> level0_runs_;
   std::array<std::vector<GLsizei>, 2> draw_counts_;       // the runs as glMultiDrawElements takes them
   std::array<std::vector<const void*>, 2> draw_offsets_;  // (filled in update())
-  GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
+  gl::GridMesh block_mesh_;  // 32 x 32 quads: Level1 is drawn as culled blocks of it
   std::map<std::pair<int, int>, std::unique_ptr<SizeMeshes>> size_meshes_;
   lod::Level1SizeController controller_;
 

@@ -1,29 +1,21 @@
 #pragma once
-// A GL texture holding a square window over a grid too large for one texture
-// (DEM samples, imagery pixels; issue 16), addressed wrap-around: grid texel
-// (i, j) lives in texel (i mod size, j mod size) and GL_REPEAT makes linear
-// filtering right across the seam. terrain::ToroidalWindow says which
+// A texture holding a square window over a grid too large for one texture
+// (DEM samples, imagery pixels), addressed wrap-around: grid texel (i, j)
+// lives in texel (i mod size, j mod size), and the texture repeats, so linear
+// filtering is right across the seam. terrain::ToroidalWindow says which
 // rectangles scroll in on a move; only those are uploaded, straight from the
-// caller's rows (GL_UNPACK_ROW_LENGTH), no copy. No mipmaps: a shader reads
+// caller's rows, no copy (gl/window_storage.h). No mipmaps: a shader reads
 // it at level 0 only. Shared by the height and imagery windows.
-
-#include <epoxy/gl.h>
 
 #include <functional>
 #include <string>
 
 #include <glm/vec2.hpp>
 
-#include "gl/gl_objects.h"
+#include "gl/window_storage.h"
 #include "terrain/toroidal_window.h"
 
 namespace ig::render {
-
-// How one texel is stored and uploaded.
-struct WindowTexelFormat {
-  GLenum internal_format, format, type;
-  int bytes_per_texel, unpack_alignment;
-};
 
 class WindowTexture {
  public:
@@ -37,14 +29,14 @@ class WindowTexture {
 
   // A size x size window (clamped to the grid) over grid_w x grid_h. Throws
   // gl::GlError "<what> WxH exceeds the GL texture limit N" if it does not fit.
-  WindowTexture(int grid_w, int grid_h, int size, const WindowTexelFormat& format, const std::string& what);
+  WindowTexture(int grid_w, int grid_h, int size, const gl::TexelFormat& format, const std::string& what);
 
   // Moves the window so it is centred on `centre` (clamped to the grid) and
   // uploads what scrolled in from `source`; returns the texels uploaded.
   long long centre_on(glm::ivec2 centre, const Source& source);
 
   const terrain::ToroidalWindow& window() const { return window_; }
-  GLuint id() const { return tex_.id(); }
+  unsigned id() const { return storage_.id(); }  // the GL texture name
   bool placed() const { return window_.placed(); }
   glm::ivec2 origin() const { return window_.origin(); }
   glm::ivec2 size() const { return {window_.size_x(), window_.size_y()}; }
@@ -52,8 +44,7 @@ class WindowTexture {
 
  private:
   terrain::ToroidalWindow window_;
-  WindowTexelFormat format_;
-  gl::Texture tex_;
+  gl::WindowStorage storage_;
   long long uploaded_ = 0;
 };
 

@@ -1,4 +1,4 @@
-// Height window texture (issue 16): a small toroidally addressed window,
+// Height window texture: a small toroidally addressed window,
 // moved along a path with small steps, diagonal steps, seam crossings,
 // clamping at the DEM's edges and jumps, holds after every move exactly the
 // heights the full-DEM texture holds at the same samples, and each move
@@ -10,10 +10,10 @@
 #include <random>
 #include <vector>
 
-#include <epoxy/gl.h>
-
+#include "gl/frame_state.h"
 #include "gl/gl_context.h"
 #include "gl/gl_objects.h"
+#include "gl/window_storage.h"
 #include "render/height_window_texture.h"
 #include "terrain/heightfield.h"
 #include "window_path_checks.h"
@@ -33,29 +33,20 @@ ig::terrain::Heightfield random_heightfield(int w, int h) {
   return hf;
 }
 
-std::vector<float> read_texture(GLuint tex, int w, int h) {
-  std::vector<float> out(static_cast<std::size_t>(w) * h);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(tex, 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
-  return out;
-}
-
 TEST(HeightWindowTexture, ToroidalUpdatesMatchTheFullTexture) {
   const auto context = ig::gl::create_headless_context();
   const ig::terrain::Heightfield hf = random_heightfield(97, 75);
   // The full texture, as TerrainScene makes it for a DEM that fits.
-  ig::gl::Texture full = ig::gl::create_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(full.id(), 1, GL_R32F, hf.width, hf.height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(full.id(), 0, 0, 0, hf.width, hf.height, GL_RED, GL_FLOAT, hf.heights.data());
-  const std::vector<float> full_texels = read_texture(full.id(), hf.width, hf.height);
+  const ig::gl::Texture full =
+      ig::gl::create_filled_texture(hf.width, hf.height, ig::gl::kHeightTexels, hf.heights.data());
+  const std::vector<float> full_texels = ig::gl::read_height_texels(full.id(), hf.width, hf.height);
 
   constexpr int kSize = 16;
   ig::render::HeightWindowTexture window(hf, kSize);
   ASSERT_EQ(window.size(), glm::ivec2(kSize, kSize));
   const long long total = window_checks::expect_window_follows_path<float>(
       kSize, hf.width, full_texels, 1, [&](glm::ivec2 c) { return window.centre_on(c); },
-      [&] { return window.origin(); }, [&] { return read_texture(window.id(), kSize, kSize); },
+      [&] { return window.origin(); }, [&] { return ig::gl::read_height_texels(window.id(), kSize, kSize); },
       [&](glm::ivec2, glm::ivec2 o) {
         EXPECT_GE(o.x, 0);
         EXPECT_GE(o.y, 0);
@@ -63,7 +54,7 @@ TEST(HeightWindowTexture, ToroidalUpdatesMatchTheFullTexture) {
         EXPECT_LE(o.y + kSize, hf.height);
       });
   EXPECT_EQ(window.uploaded_samples(), total);
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_TRUE(ig::gl::no_gl_error());
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Imagery window texture (issue 16): a small wrap-around window over
+// Imagery window texture: a small wrap-around window over
 // full-resolution imagery (2 pixels a DEM sample) paged through a tile
 // cache, moved along a path of small, diagonal, seam-crossing, clamped and
 // jumping steps, holds after every move exactly the pixels a full upload of
@@ -20,10 +20,10 @@
 #include <random>
 #include <vector>
 
-#include <epoxy/gl.h>
-
+#include "gl/frame_state.h"
 #include "gl/gl_context.h"
 #include "gl/gl_objects.h"
+#include "gl/window_storage.h"
 #include "render/imagery_window_texture.h"
 #include "render/terrain_scene.h"
 #include "terrain/imagery_loader.h"
@@ -32,19 +32,9 @@
 
 namespace {
 
-std::vector<std::uint8_t> read_rgb(GLuint tex, int w, int h) {
-  std::vector<std::uint8_t> out(static_cast<std::size_t>(w) * h * 3);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(tex, 0, GL_RGB, GL_UNSIGNED_BYTE, static_cast<GLsizei>(out.size()), out.data());
-  return out;
-}
-
 std::vector<std::uint8_t> upload_and_read(const std::vector<std::uint8_t>& rgb, int w, int h) {
-  ig::gl::Texture full = ig::gl::create_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(full.id(), 1, GL_RGB8, w, h);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(full.id(), 0, 0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
-  return read_rgb(full.id(), w, h);
+  const ig::gl::Texture full = ig::gl::create_filled_texture(w, h, ig::gl::kImageryTexels, rgb.data());
+  return ig::gl::read_imagery_texels(full.id(), w, h);
 }
 
 // Lets the test stop the cache's reads (so tiles stay missing) and go on.
@@ -112,7 +102,7 @@ TEST(ImageryWindowTexture, ToroidalUpdatesMatchAFullUpload) {
         window.cache().wait_idle();
         return uploaded + window.centre_on_sample(c);
       },
-      [&] { return window.origin(); }, [&] { return read_rgb(window.id(), kSize, kSize); },
+      [&] { return window.origin(); }, [&] { return ig::gl::read_imagery_texels(window.id(), kSize, kSize); },
       [&](glm::ivec2 c, glm::ivec2 o) {
         // Centred on the sample's pixel, unless clamped at the image's edges.
         const glm::ivec2 centre_px = (2 * c + 1) * kStep / 2;
@@ -123,7 +113,7 @@ TEST(ImageryWindowTexture, ToroidalUpdatesMatchAFullUpload) {
   EXPECT_EQ(window.cache().stats().misses, 0);  // no frame read a tile itself
   EXPECT_GT(window.cache().stats().evictions, 0);
   EXPECT_LE(window.cache().stats().peak_resident_bytes, window.cache().budget_bytes());
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_TRUE(ig::gl::no_gl_error());
 }
 
 TEST(ImageryWindowTexture, AMoveWhoseTilesAreNotResidentIsHeldNotWaitedFor) {
@@ -162,7 +152,7 @@ TEST(ImageryWindowTexture, AMoveWhoseTilesAreNotResidentIsHeldNotWaitedFor) {
   EXPECT_EQ(uploaded, kSize * kSize);  // a jump: the whole window, once
   const glm::ivec2 o = window.origin();
   EXPECT_EQ(o, glm::ivec2(std::clamp(161 - kSize / 2, 0, fw - kSize), std::clamp(121 - kSize / 2, 0, fh - kSize)));
-  window_checks::expect_window_holds(read_rgb(window.id(), kSize, kSize), kSize, o, full_texels, fw, 3);
+  window_checks::expect_window_holds(ig::gl::read_imagery_texels(window.id(), kSize, kSize), kSize, o, full_texels, fw, 3);
   EXPECT_EQ(cache.stats().misses, load_misses);  // no move read a tile itself
   EXPECT_EQ(window.stats().moves, 2);
 }
@@ -192,7 +182,7 @@ TEST(ImageryWindowTexture, PagedGdalImageryEqualsTheInMemoryWarp) {
     window.centre_on_sample(c);
     window.cache().wait_idle();
     window.centre_on_sample(c);
-    window_checks::expect_window_holds(read_rgb(window.id(), kSize, kSize), kSize, window.origin(), full_texels,
+    window_checks::expect_window_holds(ig::gl::read_imagery_texels(window.id(), kSize, kSize), kSize, window.origin(), full_texels,
                                        whole.width, 3);
   }
   EXPECT_GT(window.cache().stats().evictions, 0);
@@ -225,7 +215,7 @@ TEST(ImageryWindowTexture, EachWindowSetHasItsOwnImageryWindow) {
   const auto* wb = scene.imagery_window(b);
   EXPECT_GT(std::abs(wa->origin().x - wb->origin().x), 60);
   for (const auto* w : {wa, wb})
-    window_checks::expect_window_holds(read_rgb(w->id(), w->size().x, w->size().y), w->size().x, w->origin(),
+    window_checks::expect_window_holds(ig::gl::read_imagery_texels(w->id(), w->size().x, w->size().y), w->size().x, w->origin(),
                                        full_texels, whole.width, 3);
   EXPECT_EQ(wa->stats().moves, 1);
   scene.release_windows(b);

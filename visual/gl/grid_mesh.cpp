@@ -1,13 +1,11 @@
-#include "render/grid_mesh.h"
+#include "gl/grid_mesh.h"
 
 #include <cstdint>
 #include <vector>
 
-#include "gl/work_counters.h"
-
-namespace ig::render {
-
-GridMesh::GridMesh(int n) : n_(n) {
+namespace ig::gl {
+namespace {
+std::vector<std::int16_t> grid_vertices(int n) {
   std::vector<std::int16_t> verts;
   verts.reserve(size_t(n + 1) * (n + 1) * 2);
   for (int j = 0; j <= n; ++j)
@@ -15,6 +13,11 @@ GridMesh::GridMesh(int n) : n_(n) {
       verts.push_back(std::int16_t(i));
       verts.push_back(std::int16_t(j));
     }
+  return verts;
+}
+}  // namespace
+
+GridMesh::GridMesh(int n) : n_(n), mesh_(grid_vertices(n), 2, {{2, 0}}) {
   std::vector<std::uint32_t> idx;
   idx.reserve(size_t(n) * n * 6);
   auto v = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
@@ -27,28 +30,12 @@ GridMesh::GridMesh(int n) : n_(n) {
         // (i,j) (i+1,j) (i+1,j+1) and (i,j) (i+1,j+1) (i,j+1): counter-clockwise seen from above.
         idx.insert(idx.end(), {v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j), v(i + 1, j + 1), v(i, j + 1)});
       }
-  index_count_ = GLsizei(idx.size());
-
-  vbo_ = gl::create_buffer(verts);
-  ibo_ = gl::create_buffer(idx);
-  vao_ = gl::create_vertex_array();
-  glVertexArrayVertexBuffer(vao_.id(), 0, vbo_.id(), 0, 2 * sizeof(std::int16_t));
-  glVertexArrayElementBuffer(vao_.id(), ibo_.id());
-  gl::vertex_attrib_int(vao_, 0, 2, GL_SHORT, 0, 0);
-}
-
-void GridMesh::draw() const {
-  glBindVertexArray(vao_.id());
-  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
-  gl::count_draw();
+  list_ = mesh_.add_indices(idx);
 }
 
 void GridMesh::draw_quadrant(int q) const {
-  const GLsizei count = index_count_ / 4;
-  glBindVertexArray(vao_.id());
-  glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,
-                 reinterpret_cast<const void*>(std::size_t(q) * std::size_t(count) * sizeof(std::uint32_t)));
-  gl::count_draw();
+  const int count = index_count() / 4;
+  mesh_.draw(list_, q * count, count);
 }
 
-}  // namespace ig::render
+}  // namespace ig::gl

@@ -5,26 +5,25 @@
 // (i,j)-(i+1,j+1) diagonal, the convention the ray cast and
 // Heightfield::sample_surface() also use.
 
-#include "gl/gl_objects.h"
+#include "gl/static_mesh.h"
 
-namespace ig::render {
+namespace ig::gl {
 
 class GridMesh {
  public:
   explicit GridMesh(int quads_per_side);
 
   int quads_per_side() const { return n_; }
-  GLsizei index_count() const { return index_count_; }
+  int index_count() const { return mesh_.index_count(list_); }
   // Draw the whole grid (the caller has set the program and its uniforms).
-  void draw() const;
+  void draw() const { mesh_.draw(list_); }
   // Draw one quarter, q = 0 SW, 1 SE, 2 NW, 3 NE (n even only).
   void draw_quadrant(int q) const;
 
  private:
   int n_;
-  gl::VertexArray vao_;
-  gl::Buffer vbo_, ibo_;
-  GLsizei index_count_ = 0;
+  StaticMesh mesh_;
+  int list_ = 0;
 };
 
-}  // namespace ig::render
+}  // namespace ig::gl

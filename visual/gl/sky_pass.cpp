@@ -1,0 +1,27 @@
+#include "gl/sky_pass.h"
+
+namespace ig::gl {
+
+SkyPass::SkyPass(const std::string& shader_dir)
+    : program_(shader_dir, "sky.vert", "sky.frag"), empty_vao_(create_vertex_array()) {}
+
+void SkyPass::draw(const glm::mat4& inv_view_proj, const environment::SkyLight& sky, PassRecorder& recorder) const {
+  program_.use();
+  program_.set("u_inv_view_proj", inv_view_proj);
+  program_.set("u_zenith", sky.sky_zenith);
+  program_.set("u_horizon", sky.sky_horizon);
+  program_.set("u_sun_dir", sky.sun_direction);
+  program_.set("u_glow", sky.horizon_glow);
+  program_.set("u_sun_disc", sky.sun_disc);
+  glDisable(GL_CULL_FACE);
+  glDepthFunc(GL_GEQUAL);  // only where the depth buffer still holds the clear value
+  glDepthMask(GL_FALSE);
+  glBindVertexArray(empty_vao_.id());
+  recorder.begin("sky");
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  count_draw();
+  recorder.end();
+  glDepthMask(GL_TRUE);
+}
+
+}  // namespace ig::gl
