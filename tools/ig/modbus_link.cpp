@@ -6,7 +6,6 @@
 #include <iostream>
 
 #include "cli_args.h"
-#include "render/twolevel_method.h"
 
 namespace ig::app {
 
@@ -32,8 +31,7 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   wireframe_ = c.wireframe;
   for (auto& ch : runner_.channels()) {
     ch.renderer->set_wireframe(c.wireframe);
-    if (u.thresholds)
-      if (auto* t = dynamic_cast<render::TwoLevelMethod*>(ch.method.get())) t->set_thresholds(c.a1, c.a2);
+    if (u.thresholds) ch.method->tune({std::pair<double, double>(c.a1, c.a2)});
   }
   if (u.fog) runner_.scene().set_fog_visibility(c.fog_visibility_m);
   if (u.rebuild && (c.alpha != active_.alpha || c.level0_budget != active_.level0_budget)) {
@@ -80,9 +78,9 @@ void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, s
   const auto& ch = runner_.channels().front();
   s.triangles = std::uint32_t(std::clamp<long long>(ch.last.method.triangles, 0, 0xFFFFFFFFLL));
   std::uint16_t flags = 0;
-  if (auto* t = dynamic_cast<const render::TwoLevelMethod*>(ch.method.get())) {
-    s.level1_size = std::uint16_t(t->level1_size());
-    s.level1_ratio = float(t->last_ratio());
+  if (const auto level = ch.method->level_status()) {
+    s.level1_size = std::uint16_t(level->level1_size);
+    s.level1_ratio = float(level->coverage_ratio);
     flags |= ctl::kFlagTwoLevel;
   }
   const double pose_age_ms = feed.pose_age_ms();

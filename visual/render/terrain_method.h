@@ -27,6 +27,20 @@ struct ErrorKnob {
   double value = 0.0;
 };
 
+// Knobs a running method may take between frames (Modbus holding registers,
+// docs/modbus.md). A field left empty keeps the method's value; a method
+// ignores the knobs it has not.
+struct MethodTuning {
+  // Level1 size thresholds (a1, a2), a1 < a2 (options::TwoLevelOptions).
+  std::optional<std::pair<double, double>> level1_thresholds;
+};
+
+// A multi-level method's state after the last frame, for the status registers.
+struct LevelStatus {
+  int level1_size = 0;          // Level1 vertices a side
+  double coverage_ratio = -1.0; // Level1's share of the terrain pixels (-1: not measured yet)
+};
+
 struct MethodFrameStats {
   long long triangles = 0;  // triangles submitted this frame
   std::string passes;       // which passes ran, e.g. "terrain" or "level1+band+level0"
@@ -57,6 +71,18 @@ class TerrainMethod {
   // The passes draw() runs, in order, for the work counters (fixed for the
   // run). A method with one pass needs nothing: FrameRenderer opens "terrain".
   virtual std::vector<std::string> pass_names() const { return {"terrain"}; }
+  // Applies runtime knobs at the frame boundary (default: none to take).
+  virtual void tune(const MethodTuning& tuning) { (void)tuning; }
+  // The last frame's level state (nullopt: a single-level method).
+  virtual std::optional<LevelStatus> level_status() const { return std::nullopt; }
+  // The height the last frame drew at DEM sample position (i, j) where the
+  // method drew a coarser surface than the DEM; nullopt where it drew full
+  // resolution (everywhere, by default).
+  virtual std::optional<double> coarse_height_at(double i, double j) const {
+    (void)i;
+    (void)j;
+    return std::nullopt;
+  }
   // FrameRenderer's pass recorder; a method with several passes opens each
   // with begin_pass() (no-op without a recorder).
   void set_pass_recorder(gl::PassRecorder* recorder) { passes_ = recorder; }
