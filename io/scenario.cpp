@@ -324,12 +324,15 @@ options::TwoLevelOptions parse_twolevel(const json& j, const std::string& path) 
     const auto& b = j["level0_budget"];
     t.level0_budget = b.is_string() && b.get<std::string>() == "auto"
                           ? 0
-                          : static_cast<int>(get_integer(b, child(path, "level0_budget") + " (a number or \"auto\")", 2, 10000000));
+                          : static_cast<int>(get_integer(b, child(path, "level0_budget") + " (a number or \"auto\")",
+                                                        options::TwoLevelOptions::kMinLevel0Budget,
+                                                        options::TwoLevelOptions::kMaxLevel0Budget));
   }
-  if (j.contains("a1")) t.a1 = get_number_in(j["a1"], child(path, "a1"), 0.0, 1.0);
-  if (j.contains("a2")) t.a2 = get_number_in(j["a2"], child(path, "a2"), 0.0, 1.0);
-  if (!(t.a1 < t.a2)) fail(child(path, "a2"), "must be greater than a1 (a1 " + num(t.a1) + ", a2 " + num(t.a2) + ")");
-  if (j.contains("alpha")) t.alpha = get_positive(j["alpha"], child(path, "alpha"), 1e9);
+  if (j.contains("a1")) t.a1 = get_number(j["a1"], child(path, "a1"));
+  if (j.contains("a2")) t.a2 = get_number(j["a2"], child(path, "a2"));
+  if (const auto why = options::TwoLevelOptions::check_thresholds(t.a1, t.a2))  // "aN must ..."
+    fail(child(path, why->substr(0, 2)), why->substr(3));
+  if (j.contains("alpha")) t.alpha = get_positive(j["alpha"], child(path, "alpha"), options::TwoLevelOptions::kMaxAlpha);
   if (j.contains("beta"))
     t.gaussian_beta = get_choice(j["beta"], child(path, "beta"), {"linear", "gaussian"}) == "gaussian";
   if (j.contains("max_level1")) {
@@ -372,7 +375,8 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   }
   if (j.contains("method")) r.method = get_nonempty_string(j["method"], child(path, "method"));
   if (j.contains("fog_visibility_m")) {
-    r.shading.fog_visibility_m = get_number_in(j["fog_visibility_m"], child(path, "fog_visibility_m"), 0.0, kMaxDistanceM);
+    r.shading.fog_visibility_m = get_number_in(j["fog_visibility_m"], child(path, "fog_visibility_m"), 0.0,
+                                                 options::ShadingOptions::kMaxFogVisibilityM);
   }
   if (j.contains("sky_zenith_rgb")) r.shading.sky_zenith = get_colour(j["sky_zenith_rgb"], child(path, "sky_zenith_rgb"));
   if (j.contains("sky_horizon_rgb"))
