@@ -21,7 +21,7 @@
 #include <map>
 #include <set>
 
-#include "bench_report.h"
+#include "session/bench_report.h"
 #include "cli_args.h"
 #include "commands.h"
 #include "gl/shader_program.h"
@@ -33,6 +33,13 @@
 
 namespace ig::app {
 namespace {
+using session::BenchRow;
+using session::BenchContext;
+using session::MatchedRow;
+using session::write_bench_csv;
+using session::write_bench_markdown;
+using session::plot_error_vs_time;
+using session::match_horizon_error;
 
 constexpr const char* kUsage =
     "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"

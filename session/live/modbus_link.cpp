@@ -1,15 +1,15 @@
 // Compiled only with Modbus (IG_WITH_MODBUS); see modbus_link.h.
-#include "modbus_link.h"
+#include "session/live/modbus_link.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 
-#include "cli_args.h"
+#include <stdexcept>
 
-namespace ig::app {
+namespace ig::session {
 
-ModbusLink::ModbusLink(const std::string& endpoint, session::ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet)
+ModbusLink::ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet)
     : runner_(runner), quiet_(quiet) {
   const auto& r = runner.scenario().render;
   active_.a1 = float(r.twolevel.a1);
@@ -56,7 +56,7 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   return a;
 }
 
-void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, session::PoseFeed& feed, bool last,
+void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
                          const ExtraSourceStatus& source) {
   namespace ctl = io::control;
   const double frame_us = (frame_end_s - frame_start_s) * 1e6;
@@ -117,13 +117,13 @@ void check_modbus_endpoint(const std::string& endpoint) {
   try {
     io::control::parse_modbus_endpoint(endpoint);
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--modbus ") + e.what());
+    throw std::invalid_argument(std::string("--modbus ") + e.what());
   }
 }
 
-std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, session::ScenarioRunner& runner,
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, ScenarioRunner& runner,
                                                     io::LatencyMode initial_latency, bool quiet) {
   return std::make_unique<ModbusLink>(endpoint, runner, initial_latency, quiet);
 }
 
-}  // namespace ig::app
+}  // namespace ig::session
