@@ -20,13 +20,17 @@
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "lod/chunk_quadtree.h"
+#include "options/method_options.h"
 #include "render/terrain_method.h"
 
 namespace ig::render {
 
 class ChunkedMethod final : public TerrainMethod {
  public:
-  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
+  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, options::ChunkedOptions options = {})
+      : ChunkedMethod(scene, shader_dir, options.tau_px) {}
+  // Throws std::invalid_argument unless tau_px > 0 (finite).
+  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px);
   ChunkedMethod(const ChunkedMethod&) = delete;
   ChunkedMethod& operator=(const ChunkedMethod&) = delete;
 

@@ -13,6 +13,7 @@
 
 #include "gl/render_target.h"
 #include "gl/work_counters.h"
+#include "options/method_options.h"
 #include "options/twolevel_options.h"
 #include "render/camera.h"
 #include "render/terrain_scene.h"
@@ -109,16 +110,21 @@ class TerrainMethod {
 // geometric error e metres at distance d projects to at most e / d times this.
 double pixels_per_radian(const Camera& camera, int viewport_height_px);
 
+using options::MethodOptions;    // options/method_options.h
 using options::TwoLevelOptions;  // options/twolevel_options.h
 
 // Names accepted by make_method().
 std::vector<std::string> method_names();
-// Throws std::invalid_argument naming the method and the choices. `knob`
-// overrides the method's error knob (its default when nullopt); methods
-// without a knob ignore it.
+// Throws std::invalid_argument naming the method and the choices. The
+// method takes its own struct of `options`; `knob` overrides its error knob
+// there (for sweeps); methods without a knob ignore it.
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
-                                           const std::string& shader_dir, const TwoLevelOptions& twolevel,
+                                           const std::string& shader_dir, const MethodOptions& options,
                                            std::optional<double> knob = std::nullopt);
+// The error knob a method built from `options` would report, read from the
+// options without building it (nullopt: the method has none). Throws
+// std::invalid_argument for an unknown name.
+std::optional<ErrorKnob> default_knob(const std::string& name, const MethodOptions& options);
 // The knob values `ig bench --sweep` runs for a method, from least to most
 // accurate (empty for methods without a knob).
 std::vector<double> knob_sweep(const std::string& name);
