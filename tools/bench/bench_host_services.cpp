@@ -2,7 +2,7 @@
 //
 //   bench_host_services [DEM_FILE] [--frames N] [--hot N] [--los N]
 //
-// The load of docs/results.md "Host services (issue 15)" in-process, without
+// The load of docs/results.md "Host services" in-process, without
 // sockets or rendering: every frame one CIGI host datagram with N HAT/HOT
 // requests (a third each HAT, HOT, extended) and N extended LOS requests
 // (half segments, half vectors, 5-20 km, 2000 m above the terrain, 5-30°
