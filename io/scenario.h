@@ -13,6 +13,7 @@
 #include "io/filter/pose_filter.h"
 #include "options/shading_options.h"
 #include "options/terrain_options.h"
+#include "options/method_options.h"
 #include "options/twolevel_options.h"
 
 namespace ig::io {
@@ -22,14 +23,13 @@ struct ScenarioError : std::runtime_error {
 };
 
 // Parameters of the seeded fractal terrain generator (fBm + ridged noise).
-using GeneratorSpec = options::SyntheticTerrainOptions;  // options/terrain_options.h
 
 // How a file is read (encoding, scale, offset, spacing_m) comes from
 // options::DemLoadOptions, the loader's own settings.
 struct TerrainSpec : options::DemLoadOptions {
   // Exactly one of file / generator is set.
   std::optional<std::string> file;  // environment variables already expanded
-  std::optional<GeneratorSpec> generator;
+  std::optional<options::SyntheticTerrainOptions> generator;
   // Samples a side of the full-resolution height window the two-level
   // method reads around Level1 (render/height_window_texture.h); 0 = none.
   int height_window = 0;
@@ -64,6 +64,16 @@ struct RenderSpec {
   // terrain spanning more than 5 km (session::earth_radius_for), "on", "off".
   std::string earth_curvature = "auto";
   options::TwoLevelOptions twolevel;  // render.twolevel
+  // render.roam, render.quadtree, render.geomipmap, render.chunked, render.cdlod
+  options::RoamOptions roam;
+  options::QuadtreeOptions quadtree;
+  options::GeoMipMapOptions geomipmap;
+  options::ChunkedOptions chunked;
+  options::CdlodOptions cdlod;
+  // Every method's settings, as make_method takes them.
+  options::MethodOptions method_options() const {
+    return {twolevel, roam, quadtree, geomipmap, chunked, cdlod};
+  }
   // Anti-aliasing of the IG framebuffer: "msaa" (msaa_samples per pixel,
   // clamped to GL_MAX_SAMPLES), "fxaa" (a post-process edge filter), "off",
   // or "auto": msaa on a GPU, fxaa on a CPU rasterizer (llvmpipe), where

@@ -36,6 +36,7 @@ struct ShadingOptions {
   glm::vec3 sky_zenith{0.22f, 0.42f, 0.78f};    // RGB in [0, 1]
   glm::vec3 sky_horizon{0.70f, 0.80f, 0.92f};   // RGB in [0, 1], also the fog colour
   double fog_visibility_m = 60000.0;            // distance where fog reaches ~98 %; 0 = off
+  static constexpr double kMaxFogVisibilityM = 1e9;  // fog_visibility_m in [0, kMaxFogVisibilityM]
   // Ground detail fixed to the terrain (render.ground_detail): materials and
   // grain that give a low-flying pilot cues of speed and height.
   bool ground_detail = true;

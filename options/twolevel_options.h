@@ -6,12 +6,23 @@
 // Plain data, no GL: io and visual both include it. Defaults: the paper's
 // settings, except where docs/twolevel.md says why not.
 
+#include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace ig::options {
 
 struct TwoLevelOptions {
+  // Valid ranges, checked against these by every place that sets a value
+  // (scenario file, command line, Modbus registers). a1 and a2 lie in
+  // (0, 1) with a1 < a2 (check_thresholds).
+  static constexpr int kMinLevel0Budget = 2, kMaxLevel0Budget = 10'000'000;
+  static constexpr double kMaxAlpha = 1e9;  // alpha in (0, kMaxAlpha]
+  // The budget "auto" takes at the reference display (lod/level0_budget.h),
+  // and what a method given 0 directly uses.
+  static constexpr int kReferenceLevel0Budget = 524288;
+
   // Level0 ROAM triangles (the paper: 2048). 0 = "auto": from the finest
   // channel's pixels per radian (lod/level0_budget.h), resolved by the
   // session when it sets up its channels; a method given 0 directly uses
@@ -46,6 +57,19 @@ struct TwoLevelOptions {
   // For cost breakdowns only (ig bench --skip-pass): passes not drawn,
   // any of "level1", "band", "level0", "count". The image is then wrong.
   std::vector<std::string> skip_passes;
+
+  // nullopt when 0 < a1 < a2 < 1, else why not: "a1 must ..." or "a2 must ...".
+  static std::optional<std::string> check_thresholds(double a1, double a2) {
+    auto num = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", v);
+      return std::string(buf);
+    };
+    if (!(a1 > 0.0 && a1 < 1.0)) return "a1 must be in (0, 1), got " + num(a1);
+    if (!(a2 > 0.0 && a2 < 1.0)) return "a2 must be in (0, 1), got " + num(a2);
+    if (!(a1 < a2)) return "a2 must be greater than a1 (a1 " + num(a1) + ", a2 " + num(a2) + ")";
+    return std::nullopt;
+  }
 };
 
 }  // namespace ig::options

@@ -121,7 +121,7 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
       {"sun_elevation_deg", runner.sun().elevation_deg},
       {"sun_azimuth_deg", runner.sun().azimuth_deg},
   };
-  if (hf.paged) {  // issue 16: paged heights
+  if (hf.paged) {  // paged heights
     const auto st = hf.paged->cache->stats();
     double wall_s = 0.0;
     for (double ms : log_.frame_ms()) wall_s += ms / 1000.0;
@@ -145,7 +145,7 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         {"deferred_reads", st.deferred},
     };
   }
-  if (const render::ImageryWindowTexture* w = runner.scene().imagery_window()) {  // issue 16: paged imagery
+  if (const render::ImageryWindowTexture* w = runner.scene().imagery_window()) {  // paged imagery
     const auto st = w->cache().stats();
     double wall_s = 0.0;
     for (double ms : log_.frame_ms()) wall_s += ms / 1000.0;

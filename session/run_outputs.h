@@ -45,7 +45,7 @@ class RunOutputs {
   int rendered_ = 0;
   std::chrono::steady_clock::time_point start_;
   TerrainWatch watch_;
-  // Paged heights (issue 16): frames that waited on a tile, tiles loaded.
+  // Paged heights: frames that waited on a tile, tiles loaded.
   long long frames_waited_on_io_ = 0, page_waits_ = 0, page_ins_ = 0;
   // Paged imagery: frames whose window move was held, held moves, tiles
   // they missed, tiles loaded, frames that waited on an imagery tile.

@@ -70,7 +70,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
     ChannelView v;
     v.spec = spec;
     v.target = make_frame_target(r, r.width, r.height);
-    v.method = render::make_method(r.method, *scene_, options_.shader_dir, r.twolevel);
+    v.method = render::make_method(r.method, *scene_, options_.shader_dir, r.method_options());
     v.renderer = std::make_unique<render::FrameRenderer>(*scene_, *v.method, options_.shader_dir);
     channels_.push_back(std::move(v));
   }
@@ -231,11 +231,11 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
       {"pitch_deg", hpr.pitch_deg},
       {"roll_deg", hpr.roll_deg},
   };
-  if (f.page_waits >= 0) {  // paged heights (issue 16)
+  if (f.page_waits >= 0) {  // paged heights
     row.emplace_back("page_waits", f.page_waits);
     row.emplace_back("page_ins", f.page_ins);
   }
-  if (f.imagery_held >= 0) {  // paged imagery (issue 16)
+  if (f.imagery_held >= 0) {  // paged imagery
     row.emplace_back("imagery_held", f.imagery_held);
     row.emplace_back("imagery_missing", f.imagery_missing);
     row.emplace_back("imagery_page_ins", f.imagery_page_ins);
@@ -265,7 +265,7 @@ void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult
 void ScenarioRunner::rebuild_method(const options::TwoLevelOptions& twolevel) {
   scenario_.render.twolevel = twolevel;
   for (auto& ch : channels_) {
-    auto method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, twolevel);
+    auto method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, scenario_.render.method_options());
     ch.renderer->set_method(*method);  // the renderer (sky program, queries) is kept
     ch.method = std::move(method);
   }

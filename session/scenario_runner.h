@@ -50,7 +50,7 @@ struct FrameResult {
   double sim_time_s = 0.0;
   io::Pose pose;
   double pose_ms = 0.0;
-  // Paged heights only (issue 16; -1 otherwise): tiles this frame had to
+  // Paged heights only (-1 otherwise): tiles this frame had to
   // wait for (synchronous page-ins: height window, ray casts, queries) and
   // tiles the background thread loaded during it.
   long long page_waits = -1;

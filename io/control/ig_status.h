@@ -6,6 +6,9 @@
 
 #include <cstdint>
 
+#include "options/shading_options.h"
+#include "options/twolevel_options.h"
+
 namespace ig::io::control {
 
 // IG state (input register 0).
@@ -55,14 +58,18 @@ struct IgStatus {
 };
 
 // The holding registers' values. The server keeps the requested values; the
-// frame loop reads them at a frame boundary and applies them.
+// frame loop reads them at a frame boundary and applies them. Defaults and
+// ranges are the options structs' (register_map.h).
 struct IgControls {
   bool freeze = false;
   bool wireframe = false;
-  float a1 = 0.50f, a2 = 0.80f;     // Level1 thresholds, 0 < a1 < a2 < 1
-  float alpha = 2000.0f;             // band factor, > 0 (method rebuilt when written)
-  std::uint32_t level0_budget = 32768;  // Level0 triangles (method rebuilt when written)
-  float fog_visibility_m = 60000.0f;   // >= 0, 0 = no fog
+  // Level1 thresholds (TwoLevelOptions::check_thresholds).
+  float a1 = float(options::TwoLevelOptions{}.a1), a2 = float(options::TwoLevelOptions{}.a2);
+  float alpha = float(options::TwoLevelOptions{}.alpha);  // band factor (method rebuilt when written)
+  // Level0 triangles (method rebuilt when written). The IG starts the
+  // server with its resolved budget; this is "auto" at the reference display.
+  std::uint32_t level0_budget = options::TwoLevelOptions::kReferenceLevel0Budget;
+  float fog_visibility_m = float(options::ShadingOptions{}.fog_visibility_m);  // 0 = no fog
   bool capture = false;                // capture-next-frame trigger
   std::uint16_t latency_mode = 0;      // 0 smooth, 1 latest, 2 CIGI synchronous (io::LatencyMode)
 };

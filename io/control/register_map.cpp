@@ -15,12 +15,6 @@ const char* type_name(RegType t) {
   return "?";
 }
 
-const RegisterDef* find_register(std::string_view name) {
-  for (const auto& d : kRegisterMap)
-    if (name == d.name) return &d;
-  return nullptr;
-}
-
 int block_size(Block b) { return b == Block::Input ? in::kCount : hold::kCount; }
 
 void put_f32(std::uint16_t* r, float v) { put_u32(r, std::bit_cast<std::uint32_t>(v)); }
@@ -93,7 +87,8 @@ std::optional<std::string> validate_controls(std::span<const std::uint16_t, hold
     const bool ok = std::isfinite(v) && (d.min_open ? v > d.min : v >= d.min) && (d.max_open ? v < d.max : v <= d.max);
     if (!ok) return std::string(d.name) + " out of range";
   }
-  if (!(get_f32(&r[hold::kA1]) < get_f32(&r[hold::kA2]))) return std::string("lod_a1 must be below lod_a2");
+  if (options::TwoLevelOptions::check_thresholds(get_f32(&r[hold::kA1]), get_f32(&r[hold::kA2])))
+    return std::string("lod_a1 must be below lod_a2");
   return std::nullopt;
 }
 

@@ -100,23 +100,24 @@ inline constexpr std::array<RegisterDef, 30> kRegisterMap = {{
      "1: keep rendering the last pose, pose input ignored"},
     {"wireframe", Block::Holding, hold::kWireframe, RegType::U16, "bool", 0, 1, false, false,
      "1: terrain drawn as lines (GL_LINE)"},
+    // Ranges: the options structs' (options/twolevel_options.h, shading_options.h).
     {"lod_a1", Block::Holding, hold::kA1, RegType::F32, "ratio", 0, 1, true, true,
      "Level1 grows when R < a1; 0 < a1 < a2"},
     {"lod_a2", Block::Holding, hold::kA2, RegType::F32, "ratio", 0, 1, true, true,
      "Level1 shrinks when R > a2; a1 < a2 < 1"},
-    {"band_alpha", Block::Holding, hold::kAlpha, RegType::F32, "factor", 0, 1e7, true, false,
-     "band factor alpha (method rebuilt at the next frame boundary)"},
-    {"level0_budget", Block::Holding, hold::kLevel0Budget, RegType::U32, "triangles", 2, 16777216, false, false,
+    {"band_alpha", Block::Holding, hold::kAlpha, RegType::F32, "factor", 0, options::TwoLevelOptions::kMaxAlpha, true,
+     false, "band factor alpha (method rebuilt at the next frame boundary)"},
+    {"level0_budget", Block::Holding, hold::kLevel0Budget, RegType::U32, "triangles",
+     options::TwoLevelOptions::kMinLevel0Budget, options::TwoLevelOptions::kMaxLevel0Budget, false, false,
      "Level0 triangle budget (method rebuilt at the next frame boundary)"},
-    {"fog_visibility", Block::Holding, hold::kFogVisibility, RegType::F32, "m", 0, 1e7, false, false,
-     "fog visibility; 0 = no fog"},
+    {"fog_visibility", Block::Holding, hold::kFogVisibility, RegType::F32, "m", 0,
+     options::ShadingOptions::kMaxFogVisibilityM, false, false, "fog visibility; 0 = no fog"},
     {"capture", Block::Holding, hold::kCapture, RegType::U16, "trigger", 0, 1, false, false,
      "write 1: the next frame is saved as PNG; reads 0 again once taken"},
     {"latency_mode", Block::Holding, hold::kLatencyMode, RegType::U16, "enum", 0, 2, false, false,
      "pose latency: 0 smooth, 1 latest, 2 CIGI synchronous (needs a CIGI source; applied at the frame boundary)"},
 }};
 
-const RegisterDef* find_register(std::string_view name);
 int block_size(Block b);  // registers in the block (in::kCount / hold::kCount)
 
 // Word order ABCD: high word first. Floats are packed by hand (libmodbus

@@ -164,7 +164,7 @@ TEST(Scenario, GeneratorEveryField) {
 
 TEST(Scenario, Defaults) {
   const Scenario s = parse_scenario(doc("", R"({"generator": {}})"));
-  const ig::io::GeneratorSpec g0;
+  const ig::options::SyntheticTerrainOptions g0;
   EXPECT_EQ(s.terrain.generator->size, g0.size);
   EXPECT_EQ(s.terrain.generator->seed, g0.seed);
   EXPECT_EQ(s.name, "scenario");
@@ -439,63 +439,6 @@ TEST(Scenario, ShippedScenariosParse) {
     }
   }
   if (parsed == 0) GTEST_SKIP() << "no scenario files in " << dir;
-}
-
-}  // namespace
-
-namespace {
-
-const char* kTwoLevelBase = R"({"terrain": {"generator": {"size": 65}}, "path": {"keys": [{"t": 0, "position": [0, 0, 100]}]},
-  "render": {"twolevel": %s}})";
-
-std::string with_twolevel(const std::string& body) {
-  char buf[1024];
-  std::snprintf(buf, sizeof buf, kTwoLevelBase, body.c_str());
-  return buf;
-}
-
-TEST(ScenarioTwoLevel, DefaultsAreThePapers) {
-  const auto s = ig::io::parse_scenario(with_twolevel("{}"));
-  EXPECT_EQ(s.render.method, "twolevel");
-  EXPECT_EQ(s.render.twolevel.level0_budget, 0);  // "auto"
-  EXPECT_DOUBLE_EQ(s.render.twolevel.a1, 0.5);
-  EXPECT_DOUBLE_EQ(s.render.twolevel.a2, 0.8);
-}
-
-TEST(ScenarioTwoLevel, Level0BudgetIsANumberOrAuto) {
-  EXPECT_EQ(ig::io::parse_scenario(with_twolevel(R"({"level0_budget": "auto"})")).render.twolevel.level0_budget, 0);
-  EXPECT_THROW(ig::io::parse_scenario(with_twolevel(R"({"level0_budget": "fine"})")), ig::io::ScenarioError);
-  EXPECT_THROW(ig::io::parse_scenario(with_twolevel(R"({"level0_budget": 1})")), ig::io::ScenarioError);
-}
-
-TEST(ScenarioTwoLevel, ReadsEveryKey) {
-  const auto s = ig::io::parse_scenario(with_twolevel(
-      R"({"level0_budget": 4096, "a1": 0.4, "a2": 0.9, "alpha": 500, "beta": "gaussian", "max_level1": 513, "band_stride": 1, "band": "target", "level0_error": "whole"})"));
-  const auto& t = s.render.twolevel;
-  EXPECT_EQ(t.level0_budget, 4096);
-  EXPECT_DOUBLE_EQ(t.a1, 0.4);
-  EXPECT_DOUBLE_EQ(t.a2, 0.9);
-  EXPECT_DOUBLE_EQ(t.alpha, 500);
-  EXPECT_TRUE(t.gaussian_beta);
-  EXPECT_EQ(t.max_level1, 513);
-  EXPECT_EQ(t.band_stride, 1);
-  EXPECT_FALSE(t.band_inline);
-  EXPECT_TRUE(t.level0_whole_error);
-}
-
-TEST(ScenarioTwoLevel, BadValuesNameTheirKey) {
-  auto error_of = [](const std::string& body) {
-    try {
-      ig::io::parse_scenario(with_twolevel(body));
-    } catch (const ig::io::ScenarioError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(error_of(R"({"a1": 0.9, "a2": 0.5})").find("render.twolevel.a2"), std::string::npos);
-  EXPECT_NE(error_of(R"({"max_level1": 100})").find("render.twolevel.max_level1"), std::string::npos);
-  EXPECT_NE(error_of(R"({"beta": "cubic"})").find("render.twolevel.beta"), std::string::npos);
-  EXPECT_NE(error_of(R"({"budget": 1})").find("render.twolevel.budget"), std::string::npos);
 }
 
 }  // namespace

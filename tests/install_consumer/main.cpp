@@ -10,7 +10,7 @@
 #include "terrain/synthetic_terrain.h"
 
 int main() {
-  ig::terrain::SyntheticTerrainParams p;
+  ig::options::SyntheticTerrainOptions p;
   p.size = 129;
   const auto hf = ig::terrain::generate_synthetic_terrain(p);
   const auto level0 = ig::lod::build_level0_mesh(hf, {512});

@@ -261,7 +261,7 @@ TEST(EarthCurvature, ScenarioOptionAndDefault) {
   ig::io::RenderSpec r;
   ig::io::TerrainSpec file, generated;
   file.file = "dem.tif";
-  generated.generator = ig::io::GeneratorSpec{};
+  generated.generator = ig::options::SyntheticTerrainOptions{};
   auto hf = robustness::flat_terrain(257, 30.0, 0.0f);  // 7.7 km
   EXPECT_EQ(ig::session::earth_radius_for(r, file, hf), 0.0) << "auto: a DEM without georeference stays flat";
   hf.georef = ig::terrain::make_geographic_georef(46.5, 7.9, hf.spacing_x_m, hf.spacing_y_m);

@@ -61,7 +61,7 @@ inline ig::terrain::Heightfield flat_terrain(int n, double spacing, float height
 
 // Seeded fractal mountains (the generator the default scenario uses).
 inline ig::terrain::Heightfield hills(int size = 257, double spacing = 30.0, double relief = 900.0) {
-  ig::terrain::SyntheticTerrainParams p;
+  ig::options::SyntheticTerrainOptions p;
   p.size = size;
   p.seed = 11;
   p.spacing_m = spacing;

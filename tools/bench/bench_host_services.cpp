@@ -2,7 +2,7 @@
 //
 //   bench_host_services [DEM_FILE] [--frames N] [--hot N] [--los N]
 //
-// The load of docs/results.md "Host services (issue 15)" in-process, without
+// The load of docs/results.md "Host services" in-process, without
 // sockets or rendering: every frame one CIGI host datagram with N HAT/HOT
 // requests (a third each HAT, HOT, extended) and N extended LOS requests
 // (half segments, half vectors, 5-20 km, 2000 m above the terrain, 5-30°
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "ig/host_services.h"
+#include "session/host_services.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
 #include "load/cigi_request_mix.h"
@@ -67,7 +67,7 @@ void print_row(const char* name, std::vector<double> v) {
 
 Figures run(const ig::terrain::Heightfield& hf, const ig::terrain::HeightPyramid& pyramid, const Load& load,
             int frames, bool flush) {
-  ig::app::HostServices services(hf, ig::terrain::kEarthRadiusM, ig::session::geodetic_placer(hf),
+  ig::session::HostServices services(hf, ig::terrain::kEarthRadiusM, ig::session::geodetic_placer(hf),
                                  ig::session::local_to_geodetic(hf), {}, &pyramid);
   CigiRequestMix maker(hf);
   ig::io::Pose own;

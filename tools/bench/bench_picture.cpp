@@ -70,7 +70,7 @@ void run(const std::string& file, int w, int h, int frames) {
   auto& scene = runner.scene();
   scene.set_ground_detail(false);
   const auto plain_method = ig::render::make_method(runner.scenario().render.method, scene, runner.shader_dir(),
-                                                    runner.scenario().render.twolevel);
+                                                    runner.scenario().render.method_options());
   scene.set_ground_detail(true);
   ig::render::FrameRenderer plain_renderer(scene, *plain_method, runner.shader_dir());
   std::vector<Variant> variants;

@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   }
   ig::terrain::Heightfield hf;
   if (file.empty()) {
-    ig::terrain::SyntheticTerrainParams p;
+    ig::options::SyntheticTerrainOptions p;
     p.size = 4097;
     hf = ig::terrain::generate_synthetic_terrain(p);
   } else {

@@ -1,4 +1,4 @@
-// Issue 16's synthetic big case, made at bench time (nothing large is kept):
+// The big-terrain benchmark's synthetic DEM, made at bench time (nothing large is kept):
 // the synthetic fractal (terrain/synthetic_terrain.h) at 16385^2, 30 m,
 // refined 2x by Catmull-Rom interpolation to 32769^2 at 15 m, written as
 // N x N GeoTIFF tiles (Int16 metres, deflate, tiled) that share their edge
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "make_synthetic_tiles: --tiles %d must divide --base-size %d minus 1\n", tiles, base_size);
     return 2;
   }
-  ig::terrain::SyntheticTerrainParams p;
+  ig::options::SyntheticTerrainOptions p;
   p.size = base_size;
   p.spacing_m = 30.0;
   p.relief_m = 2500.0;

@@ -21,7 +21,7 @@
 #include <map>
 #include <set>
 
-#include "bench_report.h"
+#include "session/bench_report.h"
 #include "cli_args.h"
 #include "commands.h"
 #include "gl/shader_program.h"
@@ -33,6 +33,13 @@
 
 namespace ig::app {
 namespace {
+using session::BenchRow;
+using session::BenchContext;
+using session::MatchedRow;
+using session::write_bench_csv;
+using session::write_bench_markdown;
+using session::plot_error_vs_time;
+using session::match_horizon_error;
 
 constexpr const char* kUsage =
     "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
@@ -178,12 +185,11 @@ struct Variant {
   bool is_default = true;
 };
 
-std::vector<Variant> variants_for(const std::string& method, bool sweep, render::TerrainScene& scene,
-                                  const std::string& shader_dir, const render::TwoLevelOptions& tl) {
+std::vector<Variant> variants_for(const std::string& method, bool sweep, const render::MethodOptions& options) {
   const auto values = render::knob_sweep(method);
   if (!sweep || values.empty()) return {{method, std::nullopt, true}};
   // The default knob value, to mark it (and add it when the sweep lacks it).
-  const auto knob = render::make_method(method, scene, shader_dir, tl)->knob();
+  const auto knob = render::default_knob(method, options);
   std::vector<double> v = values;
   if (knob) {
     const double d = knob->value;
@@ -280,14 +286,14 @@ int run(const Args& args) {
   const auto& s = runner.scenario();
   const auto& hf = runner.heightfield();
   const int width = s.render.width, height = s.render.height;
-  render::TwoLevelOptions tl_options = s.render.twolevel;
-  tl_options.skip_passes = args.skip_passes;
+  render::MethodOptions method_options = s.render.method_options();
+  method_options.twolevel.skip_passes = args.skip_passes;
 
   const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
   const std::vector<int> sample_pos = sample_positions(int(frames.size()), args.error_samples);
   std::vector<Variant> variants;
   for (const auto& m : args.methods)
-    for (auto& v : variants_for(m, args.sweep, runner.scene(), run.shader_dir, tl_options)) variants.push_back(v);
+    for (auto& v : variants_for(m, args.sweep, method_options)) variants.push_back(v);
 
   Progress progress(isatty(STDERR_FILENO) != 0,
                     (long long)sample_pos.size() + (long long)variants.size() * (long long)frames.size());
@@ -323,7 +329,7 @@ int run(const Args& args) {
     BenchRow row;
     row.method = v.method;
     const auto t0 = Clock::now();
-    auto method = render::make_method(v.method, runner.scene(), run.shader_dir, tl_options, v.knob);
+    auto method = render::make_method(v.method, runner.scene(), run.shader_dir, method_options, v.knob);
     row.build_ms = ms_since(t0);
     row.knob = method->knob();
     row.default_knob = v.is_default;

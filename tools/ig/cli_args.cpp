@@ -165,6 +165,20 @@ CLI::Validator one_of(std::vector<std::string> choices) {
   });
 }
 
+CLI::Option* add_view_options(CLI::App& app, session::RunOptions& run) {
+  add_size_option(app, "--size", run.width, run.height)
+      ->description("image size in pixels, e.g. 320x240 (default: the scenario's render.width x render.height)")
+      ->option_text("WxH");
+  app.add_option("--method", run.method,
+                 "terrain LOD method: twolevel, reference, roam, geomipmap, chunked, quadtree or cdlod "
+                 "(default: the scenario's render.method, else twolevel)")
+      ->option_text("NAME");
+  auto* headless = app.add_flag("--headless")->description("render off-screen (EGL, no display needed; the default)");
+  return app.add_flag("--window")
+      ->description("show the (first) channel in a window (GLFW, needs X); stops when it is closed")
+      ->excludes(headless);
+}
+
 CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::optional<int>& width,
                              std::optional<int>& height) {
   return app.add_option_function<std::string>(name, [name, &width, &height](const std::string& v) {

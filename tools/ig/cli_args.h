@@ -14,6 +14,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "session/scenario_runner.h"
+
 namespace ig::app {
 
 struct UsageError : std::runtime_error {
@@ -83,6 +85,11 @@ const CLI::Validator& can_node_id();      // 0 .. 255 (ig serve and ig send --ca
 const CLI::Validator& can_altitude_id();  // CANaerospace 320, 322 or 332
 // One of `choices`: "expected a, b or c, got 'x'".
 CLI::Validator one_of(std::vector<std::string> choices);
+
+// The view options ig run and ig serve share, into run's overrides: --size,
+// --method, --headless and --window (the latter returned, for the caller's
+// own window options to exclude or imply; parse_view_options reads it).
+CLI::Option* add_view_options(CLI::App& app, session::RunOptions& run);
 
 // "WxH" into width / height (each a positive integer).
 CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::optional<int>& width,

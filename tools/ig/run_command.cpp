@@ -52,21 +52,13 @@ Args parse_args(const std::vector<std::string>& a) {
                  "not saved, and ig run names them in a warning")
       ->check(positive_int())
       ->option_text("N");
-  add_size_option(app, "--size", args.run.width, args.run.height)
-      ->description("image size in pixels, e.g. 320x240 (default: the scenario's render.width x render.height)")
-      ->option_text("WxH");
-  app.add_option("--method", args.run.method,
-                 "terrain LOD method: twolevel, reference, roam, geomipmap, chunked, quadtree or cdlod "
-                 "(default: the scenario's render.method, else twolevel)")
-      ->option_text("NAME");
   app.add_option("--recording", args.recording,
                  "replay the pose datagrams of an IG recording (ig serve --record, ig send --record) through "
                  "the live decoders and pose filter on a simulated clock, instead of the scenario's path")
       ->option_text("FILE");
-  auto* headless = app.add_flag("--headless")->description("render off-screen (EGL, no display needed; the default)");
-  auto* window = app.add_flag("--window")->description("show the first channel in a window (GLFW, needs X); stops when it is closed")
-                     ->excludes(headless);
-  app.add_flag("--fullscreen", args.run.fullscreen, "a full-screen window (implies --window)")->excludes(headless);
+  auto* window = add_view_options(app, args.run);
+  app.add_flag("--fullscreen", args.run.fullscreen, "a full-screen window (implies --window)")
+      ->excludes(app.get_option("--headless"));
   app.add_option("--vsync", vsync, "windowed: wait for the display's refresh, on or off (default: render.vsync, on)")
       ->check(one_of({"on", "off"}))
       ->option_text("on|off");

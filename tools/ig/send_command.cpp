@@ -13,7 +13,6 @@
 #include <memory>
 #include <optional>
 #include <queue>
-#include <random>
 #include <thread>
 
 #include "cli_args.h"
@@ -28,8 +27,7 @@
 #include "io/pose_intake.h"
 #include "io/recording.h"
 #include "io/wire/cigi.h"
-#include "io/wire/fgnetfdm.h"
-#include "io/wire/native.h"
+#include "io/pose_stream.h"
 #include "session/scene_setup.h"
 
 namespace ig::app {
@@ -184,15 +182,6 @@ Args parse_args(const std::vector<std::string>& a) {
   return args;
 }
 
-// Uniform in [0, 1) from raw 32-bit draws (std:: distributions differ between
-// standard libraries; this keeps a seed's impairments the same everywhere).
-struct Rng {
-  std::mt19937 gen;
-  explicit Rng(unsigned seed) : gen(seed) {}
-  double uniform() { return gen() / 4294967296.0; }
-  bool chance(double p) { return p > 0 && uniform() < p; }
-};
-
 struct Packet {
   double send_at_s;
   std::uint32_t order;  // tie-break keeps equal times in sequence
@@ -255,22 +244,9 @@ int run(const Args& args) {
   // One datagram (or the CAN frames) for sequence i: the path at time t,
   // stamped with the sender's clock (the steady clock) at sender_time.
   auto make_packet = [&](int i, double t, double sender_time, io::Hpr& hpr, io::Pose& pose) {
-    pose = path.sample(t);
-    const double h = 0.5 * period;
-    const glm::dvec3 velocity = (path.sample(t + h).position - path.sample(std::max(0.0, t - h)).position) /
-                                (t >= h ? 2 * h : h);
-    hpr = io::hpr_from_attitude(pose.attitude);
-    io::wire::PoseMessage m;
-    m.heading_deg = hpr.heading_deg;
-    m.pitch_deg = hpr.pitch_deg;
-    m.roll_deg = hpr.roll_deg;
-    m.sequence = std::uint32_t(i);
-    m.has_sequence = true;
+    io::wire::PoseMessage m = io::path_pose_message(path, t, 0.5 * period, std::uint32_t(i), pose, hpr);
     m.sender_time_s = sender_time;
     m.has_sender_time = !args.no_timestamp;
-    m.velocity_mps = velocity;
-    m.has_velocity = true;
-    m.position = pose.position;
     if (geodetic) {
       m.frame = io::wire::PoseMessage::Frame::Geodetic;
       m.position = *to_geodetic(pose.position);
@@ -283,26 +259,11 @@ int run(const Args& args) {
       return p;
     }
 #endif
-    switch (args.protocol) {
-      case io::Protocol::Native: {
-        const auto a = io::wire::encode_native(m);
-        p.bytes.assign(a.begin(), a.end());
-        break;
-      }
-      case io::Protocol::Cigi:
-        p.bytes = io::wire::encode_cigi_host_datagram(std::uint32_t(i), io::wire::kCigiModeOperate, m, false);
-        break;
-      case io::Protocol::FgNetFdm: {
-        const auto a = io::wire::encode_fgnetfdm(m);
-        p.bytes.assign(a.begin(), a.end());
-        break;
-      }
-      default: break;  // CAN formats go through --can
-    }
+    p.bytes = io::encode_pose_datagram(args.protocol, m, std::uint32_t(i));
     return p;
   };
 
-  Rng rng(args.seed);
+  io::StreamRng rng(args.seed);
   std::uint64_t lost = 0, duplicated = 0, corrupted = 0, reordered = 0;
   auto corrupt = [&](Packet& p) {
     if (!rng.chance(args.corrupt)) return;

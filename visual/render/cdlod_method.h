@@ -20,14 +20,17 @@
 #include "gl/shader_program.h"
 #include "lod/cdlod_selection.h"
 #include "lod/chunk_quadtree.h"
+#include "options/method_options.h"
 #include "render/terrain_method.h"
 
 namespace ig::render {
 
 class CdlodMethod final : public TerrainMethod {
  public:
-  static constexpr double kDefaultLod0Range = 128.0;  // sample spacings
-  CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range = kDefaultLod0Range);
+  CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, options::CdlodOptions options = {})
+      : CdlodMethod(scene, shader_dir, options.lod0_range) {}
+  // Throws std::invalid_argument unless lod0_range > 0 (finite).
+  CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range);
   CdlodMethod(const CdlodMethod&) = delete;
   CdlodMethod& operator=(const CdlodMethod&) = delete;
 

@@ -19,13 +19,17 @@
 
 #include "gl/static_mesh.h"
 #include "lod/chunk_quadtree.h"
+#include "options/method_options.h"
 #include "render/tau_method.h"
 
 namespace ig::render {
 
 class ChunkedMethod final : public TauMethod {
  public:
-  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
+  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, options::ChunkedOptions options = {})
+      : ChunkedMethod(scene, shader_dir, options.tau_px) {}
+  // Throws std::invalid_argument unless tau_px > 0 (finite).
+  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px);
   ChunkedMethod(const ChunkedMethod&) = delete;
   ChunkedMethod& operator=(const ChunkedMethod&) = delete;
 

@@ -14,13 +14,17 @@
 
 #include "gl/static_mesh.h"
 #include "lod/geomipmap_blocks.h"
+#include "options/method_options.h"
 #include "render/tau_method.h"
 
 namespace ig::render {
 
 class GeoMipMapMethod final : public TauMethod {
  public:
-  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px = 2.0);
+  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, options::GeoMipMapOptions options = {})
+      : GeoMipMapMethod(scene, shader_dir, options.tau_px) {}
+  // Throws std::invalid_argument unless tau_px > 0 (finite).
+  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px);
   GeoMipMapMethod(const GeoMipMapMethod&) = delete;
   GeoMipMapMethod& operator=(const GeoMipMapMethod&) = delete;
 

@@ -22,8 +22,18 @@ std::vector<std::string> method_names() {
   return {"twolevel", "reference", "roam", "geomipmap", "chunked", "quadtree", "cdlod"};
 }
 
+namespace {
+
+[[noreturn]] void throw_unknown(const std::string& name) {
+  std::string choices;
+  for (const auto& n : method_names()) choices += (choices.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown method '" + name + "' (available: " + choices + ")");
+}
+
+}  // namespace
+
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
-                                           const std::string& shader_dir, const TwoLevelOptions& twolevel,
+                                           const std::string& shader_dir, const MethodOptions& options,
                                            std::optional<double> knob) {
   // Beyond the GL texture limit only the two-level method draws (it reads
   // full resolution through the scene's height window); the others would
@@ -34,7 +44,7 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, const Terrai
                                 "x" + std::to_string(hf.height) + "): it needs the whole DEM in one texture and the GL "
                                 "height-texture limit is " + std::to_string(scene.texture_limit()) + "; use the twolevel method");
   }
-  if (scene.heightfield().paged && name != "twolevel") {  // issue 16: over the memory budget
+  if (scene.heightfield().paged && name != "twolevel") {  // over the memory budget
     const auto& hf = scene.heightfield();
     throw std::invalid_argument("method '" + name + "' cannot draw " + hf.source + " (" + std::to_string(hf.width) +
                                 "x" + std::to_string(hf.height) + "): its heights are paged (over "
@@ -45,27 +55,39 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, const Terrai
   // method keeps a full-resolution imagery window on its Level1.
   if (name == "reference") return std::make_unique<ReferenceMethod>(scene, shader_dir);
   if (name == "twolevel") {
-    TwoLevelOptions o = twolevel;
+    TwoLevelOptions o = options.twolevel;
     if (knob) o.level0_budget = int(*knob);
     return std::make_unique<TwoLevelMethod>(scene, shader_dir, o);
   }
   if (name == "roam") {
-    RoamOptions o;
+    options::RoamOptions o = options.roam;
     if (knob) o.tau_px = *knob;
     return std::make_unique<RoamMethod>(scene, shader_dir, o);
   }
   if (name == "quadtree") {
-    QuadtreeOptions o;
+    options::QuadtreeOptions o = options.quadtree;
     if (knob) o.c1 = *knob;
     return std::make_unique<QuadtreeMethod>(scene, shader_dir, o);
   }
-  if (name == "geomipmap") return std::make_unique<GeoMipMapMethod>(scene, shader_dir, knob.value_or(2.0));
-  if (name == "chunked") return std::make_unique<ChunkedMethod>(scene, shader_dir, knob.value_or(2.0));
-  if (name == "cdlod")
-    return std::make_unique<CdlodMethod>(scene, shader_dir, knob.value_or(CdlodMethod::kDefaultLod0Range));
-  std::string choices;
-  for (const auto& n : method_names()) choices += (choices.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown method '" + name + "' (available: " + choices + ")");
+  if (name == "geomipmap") return std::make_unique<GeoMipMapMethod>(scene, shader_dir, knob.value_or(options.geomipmap.tau_px));
+  if (name == "chunked") return std::make_unique<ChunkedMethod>(scene, shader_dir, knob.value_or(options.chunked.tau_px));
+  if (name == "cdlod") return std::make_unique<CdlodMethod>(scene, shader_dir, knob.value_or(options.cdlod.lod0_range));
+  throw_unknown(name);
+}
+
+std::optional<ErrorKnob> default_knob(const std::string& name, const MethodOptions& options) {
+  // Names, units and values as each method's knob() reports them.
+  if (name == "reference") return std::nullopt;
+  if (name == "twolevel") {
+    const int budget = options.twolevel.level0_budget;  // 0: what the method picks alone
+    return ErrorKnob{"level0_budget", "triangles", double(budget > 0 ? budget : lod::level0_budget_for_display(0.0))};
+  }
+  if (name == "roam") return ErrorKnob{"tau_px", "px", options.roam.tau_px};
+  if (name == "quadtree") return ErrorKnob{"C1", "", options.quadtree.c1};
+  if (name == "geomipmap") return ErrorKnob{"tau_px", "px", options.geomipmap.tau_px};
+  if (name == "chunked") return ErrorKnob{"tau_px", "px", options.chunked.tau_px};
+  if (name == "cdlod") return ErrorKnob{"lod0_range", "samples", options.cdlod.lod0_range};
+  throw_unknown(name);
 }
 
 std::vector<double> knob_sweep(const std::string& name) {

@@ -16,10 +16,7 @@
 
 namespace ig::render {
 
-struct QuadtreeOptions {
-  double c1 = 2.0;  // the knob: larger = finer everywhere
-  double c2 = 30.0;  // roughness below 1 / C2 sample spacings counts as flat
-};
+using options::QuadtreeOptions;  // options/method_options.h
 
 class QuadtreeMethod final : public TerrainMethod {
  public:

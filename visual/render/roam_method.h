@@ -15,11 +15,7 @@
 
 namespace ig::render {
 
-struct RoamOptions {
-  double tau_px = 2.0;  // split while a triangle's projected wedgie exceeds this
-  // Viewport height tau refers to until set_viewport() says otherwise.
-  int viewport_height_px = 1024;
-};
+using options::RoamOptions;  // options/method_options.h
 
 class RoamMethod final : public TerrainMethod {
  public:

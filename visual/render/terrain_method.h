@@ -13,6 +13,7 @@
 
 #include "gl/render_target.h"
 #include "gl/work_counters.h"
+#include "options/method_options.h"
 #include "options/twolevel_options.h"
 #include "render/camera.h"
 #include "render/terrain_scene.h"
@@ -25,6 +26,20 @@ struct ErrorKnob {
   std::string name;  // e.g. "tau_px", "C1", "level0_budget"
   std::string unit;  // e.g. "px", "", "triangles"
   double value = 0.0;
+};
+
+// Knobs a running method may take between frames (Modbus holding registers,
+// docs/modbus.md). A field left empty keeps the method's value; a method
+// ignores the knobs it has not.
+struct MethodTuning {
+  // Level1 size thresholds (a1, a2), a1 < a2 (options::TwoLevelOptions).
+  std::optional<std::pair<double, double>> level1_thresholds;
+};
+
+// A multi-level method's state after the last frame, for the status registers.
+struct LevelStatus {
+  int level1_size = 0;          // Level1 vertices a side
+  double coverage_ratio = -1.0; // Level1's share of the terrain pixels (-1: not measured yet)
 };
 
 struct MethodFrameStats {
@@ -57,6 +72,18 @@ class TerrainMethod {
   // The passes draw() runs, in order, for the work counters (fixed for the
   // run). A method with one pass needs nothing: FrameRenderer opens "terrain".
   virtual std::vector<std::string> pass_names() const { return {"terrain"}; }
+  // Applies runtime knobs at the frame boundary (default: none to take).
+  virtual void tune(const MethodTuning& tuning) { (void)tuning; }
+  // The last frame's level state (nullopt: a single-level method).
+  virtual std::optional<LevelStatus> level_status() const { return std::nullopt; }
+  // The height the last frame drew at DEM sample position (i, j) where the
+  // method drew a coarser surface than the DEM; nullopt where it drew full
+  // resolution (everywhere, by default).
+  virtual std::optional<double> coarse_height_at(double i, double j) const {
+    (void)i;
+    (void)j;
+    return std::nullopt;
+  }
   // FrameRenderer's pass recorder; a method with several passes opens each
   // with begin_pass() (no-op without a recorder).
   void set_pass_recorder(gl::PassRecorder* recorder) { passes_ = recorder; }
@@ -83,16 +110,21 @@ class TerrainMethod {
 // geometric error e metres at distance d projects to at most e / d times this.
 double pixels_per_radian(const Camera& camera, int viewport_height_px);
 
+using options::MethodOptions;    // options/method_options.h
 using options::TwoLevelOptions;  // options/twolevel_options.h
 
 // Names accepted by make_method().
 std::vector<std::string> method_names();
-// Throws std::invalid_argument naming the method and the choices. `knob`
-// overrides the method's error knob (its default when nullopt); methods
-// without a knob ignore it.
+// Throws std::invalid_argument naming the method and the choices. The
+// method takes its own struct of `options`; `knob` overrides its error knob
+// there (for sweeps); methods without a knob ignore it.
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
-                                           const std::string& shader_dir, const TwoLevelOptions& twolevel,
+                                           const std::string& shader_dir, const MethodOptions& options,
                                            std::optional<double> knob = std::nullopt);
+// The error knob a method built from `options` would report, read from the
+// options without building it (nullopt: the method has none). Throws
+// std::invalid_argument for an unknown name.
+std::optional<ErrorKnob> default_knob(const std::string& name, const MethodOptions& options);
 // The knob values `ig bench --sweep` runs for a method, from least to most
 // accurate (empty for methods without a knob).
 std::vector<double> knob_sweep(const std::string& name);

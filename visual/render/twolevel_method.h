@@ -74,6 +74,10 @@ class TwoLevelMethod final : public TerrainMethod {
   int level0_hidden_clusters() const { return level0_hidden_clusters_; }
   int level1_hidden_blocks() const { return level1_hidden_blocks_; }
   void set_thresholds(double a1, double a2) { controller_.set_thresholds(a1, a2); }
+  // The generic controls (twolevel_method_controls.cpp).
+  void tune(const MethodTuning& tuning) override;
+  std::optional<LevelStatus> level_status() const override;
+  std::optional<double> coarse_height_at(double i, double j) const override;
 
  private:
   struct SizeMeshes;  // wall and band ring for one Level1 size, built on first use

@@ -65,7 +65,7 @@ inline double smoothstep(double lo, double hi, double v) {
 // Uniform double in [0, 1) from a hash.
 inline double unit(std::uint32_t h) { return double(h) * (1.0 / 4294967296.0); }
 
-void validate(const SyntheticTerrainParams& p) {
+void validate(const options::SyntheticTerrainOptions& p) {
   auto bad = [](const std::string& what) {
     throw std::invalid_argument("synthetic terrain: " + what);
   };
@@ -86,7 +86,7 @@ void validate(const SyntheticTerrainParams& p) {
 
 }  // namespace
 
-Heightfield generate_synthetic_terrain(const SyntheticTerrainParams& p) {
+Heightfield generate_synthetic_terrain(const options::SyntheticTerrainOptions& p) {
   validate(p);
   const int size = p.size;
   const double inv_n = 1.0 / double(size - 1);

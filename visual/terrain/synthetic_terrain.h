@@ -20,10 +20,8 @@
 
 namespace ig::terrain {
 
-using SyntheticTerrainParams = options::SyntheticTerrainOptions;  // options/terrain_options.h
-
 // Throws std::invalid_argument (naming the bad value) for invalid params.
 // The result has no georef; source = "synthetic(seed=S,size=N)".
-Heightfield generate_synthetic_terrain(const SyntheticTerrainParams& params);
+Heightfield generate_synthetic_terrain(const options::SyntheticTerrainOptions& params);
 
 }  // namespace ig::terrain

@@ -41,7 +41,7 @@ double worst_sample_above(const Level0Mesh& m, const std::vector<float>& lift, c
 
 TEST(Level0Envelope, NoSampleAboveTheLiftedMesh) {
   for (int size : {129, 257, 200}) {
-    ig::terrain::SyntheticTerrainParams p;
+    ig::options::SyntheticTerrainOptions p;
     p.size = size == 200 ? 257 : size;
     p.seed = 11;
     auto hf = ig::terrain::generate_synthetic_terrain(p);

@@ -26,7 +26,7 @@ inline ig::terrain::Heightfield heightfield_from(int w, int h, double spacing_x_
 }
 
 inline ig::terrain::Heightfield synthetic(int size, unsigned seed = 3, double spacing = 30.0) {
-  ig::terrain::SyntheticTerrainParams p;
+  ig::options::SyntheticTerrainOptions p;
   p.size = size;
   p.seed = seed;
   p.spacing_m = spacing;

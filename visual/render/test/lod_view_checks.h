@@ -45,9 +45,9 @@ struct World {
 
   // 513 x 513 samples at 30 m (15.4 km square, 1500 m relief): the default
   // landscape at half resolution, big enough for several LOD levels.
-  explicit World(int size = 513, unsigned seed = ig::terrain::SyntheticTerrainParams{}.seed)
+  explicit World(int size = 513, unsigned seed = ig::options::SyntheticTerrainOptions{}.seed)
       : context(ig::gl::create_headless_context()) {
-    ig::terrain::SyntheticTerrainParams p;
+    ig::options::SyntheticTerrainOptions p;
     p.size = size;
     p.seed = seed;
     hf = ig::terrain::generate_synthetic_terrain(p);

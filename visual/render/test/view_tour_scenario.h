@@ -18,7 +18,7 @@ inline ig::io::Scenario view_tour_scenario(const std::string& name, const std::v
                                            int height, double fov_y_deg) {
   ig::io::Scenario s;
   s.name = name;
-  ig::io::GeneratorSpec g;
+  ig::options::SyntheticTerrainOptions g;
   g.size = 513;
   g.seed = 11;
   g.spacing_m = 30.0;

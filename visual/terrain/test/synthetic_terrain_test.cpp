@@ -17,12 +17,12 @@
 
 using ig::terrain::generate_synthetic_terrain;
 using ig::terrain::Heightfield;
-using ig::terrain::SyntheticTerrainParams;
+using ig::options::SyntheticTerrainOptions;
 
 namespace {
 
-SyntheticTerrainParams params(int size, unsigned seed) {
-  SyntheticTerrainParams p;
+SyntheticTerrainOptions params(int size, unsigned seed) {
+  SyntheticTerrainOptions p;
   p.size = size;
   p.seed = seed;
   return p;
@@ -45,7 +45,7 @@ double stddev(const Heightfield& hf) {
   return std::sqrt(s / double(hf.heights.size()));
 }
 
-void expect_invalid(const SyntheticTerrainParams& p, const std::string& needle) {
+void expect_invalid(const SyntheticTerrainOptions& p, const std::string& needle) {
   try {
     (void)generate_synthetic_terrain(p);
     ADD_FAILURE() << "accepted: " << needle;
@@ -110,7 +110,7 @@ TEST(SyntheticTerrain, OtherParameterValidation) {
 }
 
 TEST(SyntheticTerrain, RangeMetadataAndNoNan) {
-  SyntheticTerrainParams p = params(257, 7);
+  SyntheticTerrainOptions p = params(257, 7);
   p.base_m = 250.0;
   p.relief_m = 2000.0;
   p.spacing_m = 20.0;
@@ -132,7 +132,7 @@ TEST(SyntheticTerrain, RangeMetadataAndNoNan) {
 TEST(SyntheticTerrain, NotFlatAndNotNoise) {
   for (double ridge : {0.0, 0.5, 1.0}) {
     SCOPED_TRACE(ridge);
-    SyntheticTerrainParams p = params(513, 3);
+    SyntheticTerrainOptions p = params(513, 3);
     p.ridge_weight = ridge;
     const Heightfield hf = generate_synthetic_terrain(p);
     // Not flat: a real spread of heights.
@@ -176,7 +176,7 @@ TEST(SyntheticTerrain, SmallerSizeIsTheSameLandscapeCoarser) {
 
 TEST(SyntheticTerrain, DefaultSizeTiming) {
   const auto t0 = std::chrono::steady_clock::now();
-  const Heightfield hf = generate_synthetic_terrain(SyntheticTerrainParams{});
+  const Heightfield hf = generate_synthetic_terrain(SyntheticTerrainOptions{});
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(hf.width, 1025);

@@ -28,7 +28,7 @@
 #include "io/wire/native_query.h"
 #include "terrain/terrain_query.h"
 
-namespace ig::app {
+namespace ig::session {
 
 struct HostServicesOptions {
   // Answers per frame (the rest wait): bounds the CPU a frame spends here.
@@ -53,7 +53,7 @@ class HostServices {
                const terrain::HeightPyramid* pyramid = nullptr);
 
   // "As drawn" HAT/HOT: where this returns a height (Level0 is drawn there,
-  // app/drawn_surface.h), answer from it instead of the full-resolution
+  // session/drawn_surface.h), answer from it instead of the full-resolution
   // surface. Unset: full resolution everywhere (the default).
   using DrawnHeight = std::function<std::optional<double>(double x_m, double y_m)>;
   void set_drawn_height(DrawnHeight f) { drawn_height_ = std::move(f); }
@@ -132,4 +132,4 @@ class HostServices {
   std::uint64_t frames_with_work_ = 0;
 };
 
-}  // namespace ig::app
+}  // namespace ig::session

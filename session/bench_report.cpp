@@ -1,4 +1,4 @@
-#include "bench_report.h"
+#include "session/bench_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,12 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
-namespace ig::app {
+#include "session/gnuplot.h"
+
+namespace ig::session {
 namespace {
 
 std::string fmt(const char* f, double v) {
@@ -252,9 +255,8 @@ bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>
   const auto methods = by_method(rows);
   bool all_positive = true;
   for (const auto& r : rows) all_positive = all_positive && r.horizon_mean_px > 0.0;
-  const std::string script_path = png_path + ".gp";
+  std::ostringstream gp;
   {
-    std::ofstream gp(script_path);
     gp << "set terminal pngcairo size 1000,650 noenhanced\n"
        << "set output '" << png_path << "'\n"
        << "set title '" << title << "'\n"
@@ -287,23 +289,7 @@ bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>
       gp << ", NaN with lines dt 2 lc rgb 'gray40' title 'matched error " << fmt("%.3f", *target_px) << " px'";
     gp << "\n";
   }
-  const std::string cmd = "gnuplot '" + script_path + "' 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) {
-    std::cerr << "ig bench: cannot run gnuplot for " << png_path << "\n";
-    return false;
-  }
-  char buf[256];
-  std::string output;
-  while (fgets(buf, sizeof buf, p)) output += buf;
-  const int rc = pclose(p);
-  if (rc != 0 || !std::filesystem::exists(png_path)) {
-    std::cerr << "ig bench: error_vs_time.png not written (is gnuplot installed? tools/setup.sh installs it): "
-              << output << " (script kept: " << script_path << ")\n";
-    return false;
-  }
-  std::filesystem::remove(script_path);
-  return true;
+  return run_gnuplot(gp.str(), png_path, "ig bench", "error_vs_time.png");
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -10,7 +10,7 @@
 
 #include "render/terrain_method.h"
 
-namespace ig::app {
+namespace ig::session {
 
 // One method at one knob value, measured along the whole flight.
 struct BenchRow {
@@ -91,4 +91,4 @@ void write_bench_markdown(const std::string& path, const BenchContext& context, 
 bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>& rows,
                         std::optional<double> target_px, const std::string& title);
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "session/drawn_surface.h"
-#include "ig/host_services.h"
+#include "session/host_services.h"
 #include "session/scenario_runner.h"
 #include "session/scene_setup.h"
 #include "io/scenario.h"
@@ -63,7 +63,7 @@ TEST(DrawnSurface, Level1IsFullResolutionAndLevel0IsTheMesh) {
   EXPECT_GT(largest_gap, 1.0);
 
   // HostServices answers HOT from the drawn surface when asked to.
-  ig::app::HostServices services(hf, runner.scene().earth_radius_m(), ig::session::geodetic_placer(hf),
+  ig::session::HostServices services(hf, runner.scene().earth_radius_m(), ig::session::geodetic_placer(hf),
                                  ig::session::local_to_geodetic(hf), {}, &runner.scene().height_pyramid());
   services.set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
   const auto to_geo = ig::session::local_to_geodetic(hf);

@@ -2,9 +2,9 @@
 #include <iostream>
 
 #include "io/can/can_pose_source.h"
-#include "serve_plugins.h"
+#include "session/live/serve_plugins.h"
 
-namespace ig::app {
+namespace ig::session {
 namespace {
 
 class CanLink final : public ExtraPoseSource {
@@ -18,7 +18,7 @@ class CanLink final : public ExtraPoseSource {
     can_ = std::make_unique<io::can::CanPoseSource>(o);
   }
 
-  void poll(session::PoseFeed& feed) override {
+  void poll(PoseFeed& feed) override {
     can_->poll([&](const io::wire::PoseMessage& m, double t, io::can::CanFormat fmt) {
       feed.intake().handle_pose(fmt == io::can::CanFormat::CanFd ? io::Protocol::CanFd : io::Protocol::CanAerospace,
                                 m, t);
@@ -60,4 +60,4 @@ std::unique_ptr<ExtraPoseSource> make_can_source(const CanSourceSettings& settin
   return std::make_unique<CanLink>(settings);
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -1,16 +1,15 @@
-// The matched-horizon-error table of ig bench (tools/ig/bench_report.*) on
-// hand-made rows with known answers. No GL: it lives among the GL tests
-// only because they are the ones linked with ig_app.
+// The matched-horizon-error table of ig bench (session/bench_report.*) on
+// hand-made rows with known answers. No GL.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "ig/bench_report.h"
+#include "session/bench_report.h"
 
 namespace {
 
-using ig::app::BenchRow;
-using ig::app::MatchKind;
+using ig::session::BenchRow;
+using ig::session::MatchKind;
 
 BenchRow row(const std::string& method, double knob, double error_px, double ms) {
   BenchRow r;
@@ -21,7 +20,7 @@ BenchRow row(const std::string& method, double knob, double error_px, double ms)
   return r;
 }
 
-const ig::app::MatchedRow& find(const std::vector<ig::app::MatchedRow>& v, const std::string& m) {
+const ig::session::MatchedRow& find(const std::vector<ig::session::MatchedRow>& v, const std::string& m) {
   for (const auto& r : v)
     if (r.method == m) return r;
   throw std::runtime_error("no row for " + m);
@@ -34,7 +33,7 @@ TEST(BenchReport, MatchedErrorInterpolatesAlongEachSweep) {
                                 row("twolevel", 3, 1.0, 40.0), row("other", 1, 6.0, 30.0),
                                 row("other", 2, 1.0, 80.0),    row("reference", -1, 0.0, 500.0),
                                 row("coarse", 1, 9.0, 5.0),    row("coarse", 2, 5.0, 7.0)};
-  const auto m = ig::app::match_horizon_error(rows, 2.0);
+  const auto m = ig::session::match_horizon_error(rows, 2.0);
   ASSERT_EQ(m.size(), 4u);
   EXPECT_EQ(find(m, "twolevel").kind, MatchKind::Measured);
   EXPECT_DOUBLE_EQ(find(m, "twolevel").frame_ms, 20.0);
@@ -54,7 +53,7 @@ TEST(BenchReport, CurveCrossingTheTargetTwiceTakesTheFasterCrossing) {
   // 3 -> 1 px between 10 and 30 ms crosses 2 px at 20 ms; 1 -> 3 px between
   // 30 and 34 ms crosses it again at 32 ms.
   std::vector<BenchRow> rows = {row("m", 1, 3.0, 10.0), row("m", 2, 1.0, 30.0), row("m", 3, 3.0, 34.0)};
-  const auto m = ig::app::match_horizon_error(rows, 2.0);
+  const auto m = ig::session::match_horizon_error(rows, 2.0);
   EXPECT_EQ(m[0].kind, MatchKind::Interpolated);
   EXPECT_DOUBLE_EQ(m[0].frame_ms, 20.0);
   EXPECT_FALSE(m[0].ratio.has_value()) << "no twolevel row: no ratio";
@@ -63,7 +62,7 @@ TEST(BenchReport, CurveCrossingTheTargetTwiceTakesTheFasterCrossing) {
 TEST(BenchReport, NoRatioWhenTwolevelMissesTheTarget) {
   std::vector<BenchRow> rows = {row("twolevel", 1, 4.0, 10.0), row("twolevel", 2, 3.0, 20.0),
                                 row("other", 1, 3.0, 5.0), row("other", 2, 0.5, 50.0)};
-  const auto m = ig::app::match_horizon_error(rows, 1.0);
+  const auto m = ig::session::match_horizon_error(rows, 1.0);
   EXPECT_EQ(find(m, "twolevel").kind, MatchKind::NotReached);
   EXPECT_EQ(find(m, "other").kind, MatchKind::Interpolated);
   EXPECT_DOUBLE_EQ(find(m, "other").frame_ms, 5.0 + (1.0 - 3.0) / (0.5 - 3.0) * 45.0);
@@ -79,8 +78,8 @@ TEST(BenchReport, MatchedErrorOnCpuTimeUsesTheCpuColumn) {
   rows[0].cpu_ms_median = 30.0;
   rows[1].cpu_ms_median = 20.0;
   rows[2].cpu_ms_median = 80.0;
-  const auto wall = ig::app::match_horizon_error(rows, 2.0);
-  const auto cpu = ig::app::match_horizon_error(rows, 2.0, &BenchRow::cpu_ms_median);
+  const auto wall = ig::session::match_horizon_error(rows, 2.0);
+  const auto cpu = ig::session::match_horizon_error(rows, 2.0, &BenchRow::cpu_ms_median);
   EXPECT_DOUBLE_EQ(find(wall, "other").frame_ms, 30.0);
   EXPECT_DOUBLE_EQ(*find(wall, "other").ratio, 1.5);
   EXPECT_DOUBLE_EQ(find(cpu, "other").frame_ms, 50.0);

@@ -17,23 +17,23 @@
 #include "io/filter/pose_filter.h"
 #include "session/pose_feed.h"
 #include "session/scenario_runner.h"
-#include "serve_plugins.h"
+#include "session/live/serve_plugins.h"
 
-namespace ig::app {
+namespace ig::session {
 
 class ModbusLink final : public ControlSurface {
  public:
   // initial_latency: the mode the run starts in (the latency_mode register's first value).
-  ModbusLink(const std::string& endpoint, session::ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet);
+  ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet);
 
   // Before rendering: freeze, wireframe, thresholds, fog, rebuilds, latency mode.
   Applied apply_controls() override;
-  void publish(int frames, double frame_start_s, double frame_end_s, session::PoseFeed& feed, bool last,
+  void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
                const ExtraSourceStatus& source) override;
   nlohmann::json summary() const override;
 
  private:
-  session::ScenarioRunner& runner_;
+  ScenarioRunner& runner_;
   bool quiet_;
   io::control::IgControls active_;  // what the IG runs with (alpha, budget: as built)
   std::unique_ptr<io::control::ModbusServer> server_;
@@ -41,4 +41,4 @@ class ModbusLink final : public ControlSurface {
   std::vector<std::pair<double, double>> window_;  // (frame end s, frame us) of the last second
 };
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -16,7 +16,7 @@
 #include "session/pose_feed.h"
 #include "session/scenario_runner.h"
 
-namespace ig::app {
+namespace ig::session {
 
 // What a control surface reports about the extra pose source.
 struct ExtraSourceStatus {
@@ -29,7 +29,7 @@ class ExtraPoseSource {
   virtual ~ExtraPoseSource() = default;
   // Hands everything that has arrived to the feed, never waiting; says each
   // change of the link's state once on stderr.
-  virtual void poll(session::PoseFeed& feed) = 0;
+  virtual void poll(PoseFeed& feed) = 0;
   virtual ExtraSourceStatus status() const = 0;
   virtual std::string summary_key() const = 0;  // its summary.json member
   virtual nlohmann::json summary() const = 0;
@@ -42,7 +42,7 @@ struct CanSourceSettings {
   double max_age_ms = 100.0;
   bool quiet = false;
 };
-// Throws UsageError when this ig was built without SocketCAN.
+// Throws std::invalid_argument when this ig was built without SocketCAN.
 std::unique_ptr<ExtraPoseSource> make_can_source(const CanSourceSettings& settings);
 
 class ControlSurface {
@@ -56,13 +56,14 @@ class ControlSurface {
   // At the frame boundary, before rendering.
   virtual Applied apply_controls() = 0;
   // After each frame: the status snapshot clients read.
-  virtual void publish(int frames, double frame_start_s, double frame_end_s, session::PoseFeed& feed, bool last,
+  virtual void publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
                        const ExtraSourceStatus& source) = 0;
   virtual nlohmann::json summary() const = 0;
 };
-// Throws UsageError for a malformed endpoint, or when built without Modbus.
+// Throws std::invalid_argument (message "--modbus ...") for a malformed
+// endpoint, or when built without Modbus.
 void check_modbus_endpoint(const std::string& endpoint);
-std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, session::ScenarioRunner& runner,
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, ScenarioRunner& runner,
                                                     io::LatencyMode initial_latency, bool quiet);
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -1,16 +1,15 @@
 // Compiled only with Modbus (IG_WITH_MODBUS); see modbus_link.h.
-#include "modbus_link.h"
+#include "session/live/modbus_link.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 
-#include "cli_args.h"
-#include "render/twolevel_method.h"
+#include <stdexcept>
 
-namespace ig::app {
+namespace ig::session {
 
-ModbusLink::ModbusLink(const std::string& endpoint, session::ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet)
+ModbusLink::ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet)
     : runner_(runner), quiet_(quiet) {
   const auto& r = runner.scenario().render;
   active_.a1 = float(r.twolevel.a1);
@@ -32,8 +31,7 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   wireframe_ = c.wireframe;
   for (auto& ch : runner_.channels()) {
     ch.renderer->set_wireframe(c.wireframe);
-    if (u.thresholds)
-      if (auto* t = dynamic_cast<render::TwoLevelMethod*>(ch.method.get())) t->set_thresholds(c.a1, c.a2);
+    if (u.thresholds) ch.method->tune({std::pair<double, double>(c.a1, c.a2)});
   }
   if (u.fog) runner_.scene().set_fog_visibility(c.fog_visibility_m);
   if (u.rebuild && (c.alpha != active_.alpha || c.level0_budget != active_.level0_budget)) {
@@ -58,7 +56,7 @@ ModbusLink::Applied ModbusLink::apply_controls() {
   return a;
 }
 
-void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, session::PoseFeed& feed, bool last,
+void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, PoseFeed& feed, bool last,
                          const ExtraSourceStatus& source) {
   namespace ctl = io::control;
   const double frame_us = (frame_end_s - frame_start_s) * 1e6;
@@ -80,9 +78,9 @@ void ModbusLink::publish(int frames, double frame_start_s, double frame_end_s, s
   const auto& ch = runner_.channels().front();
   s.triangles = std::uint32_t(std::clamp<long long>(ch.last.method.triangles, 0, 0xFFFFFFFFLL));
   std::uint16_t flags = 0;
-  if (auto* t = dynamic_cast<const render::TwoLevelMethod*>(ch.method.get())) {
-    s.level1_size = std::uint16_t(t->level1_size());
-    s.level1_ratio = float(t->last_ratio());
+  if (const auto level = ch.method->level_status()) {
+    s.level1_size = std::uint16_t(level->level1_size);
+    s.level1_ratio = float(level->coverage_ratio);
     flags |= ctl::kFlagTwoLevel;
   }
   const double pose_age_ms = feed.pose_age_ms();
@@ -119,13 +117,13 @@ void check_modbus_endpoint(const std::string& endpoint) {
   try {
     io::control::parse_modbus_endpoint(endpoint);
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--modbus ") + e.what());
+    throw std::invalid_argument(std::string("--modbus ") + e.what());
   }
 }
 
-std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, session::ScenarioRunner& runner,
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, ScenarioRunner& runner,
                                                     io::LatencyMode initial_latency, bool quiet) {
   return std::make_unique<ModbusLink>(endpoint, runner, initial_latency, quiet);
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

@@ -1,10 +1,10 @@
-#include "host_services.h"
+#include "session/host_services.h"
 
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
-namespace ig::app {
+namespace ig::session {
 
 using namespace io::wire;
 
@@ -326,4 +326,4 @@ nlohmann::json HostServices::summary() const {
           {"answer_ms_max", max_frame_ms_}};
 }
 
-}  // namespace ig::app
+}  // namespace ig::session

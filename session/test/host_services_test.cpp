@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-#include "ig/host_services.h"
+#include "session/host_services.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
 #include "io/wire/native_query.h"
@@ -18,8 +18,8 @@
 namespace {
 
 using namespace ig::io::wire;
-using ig::app::HostServices;
-using ig::app::HostServicesOptions;
+using ig::session::HostServices;
+using ig::session::HostServicesOptions;
 
 struct Fixture {
   ig::terrain::Heightfield hf = ig::terrain::test::make_ramp_terrain();

@@ -1,0 +1,233 @@
+// The live loop (live_loop.h): sources, pacing, CIGI synchronous
+// operation, the display lead, controls, captures, replies and the log.
+#include "session/live/live_loop.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <iostream>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/host_view_control.h"
+#include "io/net/udp_socket.h"
+#include "io/recording.h"
+#include "io/wire/cigi.h"
+#include "session/capture_schedule.h"
+#include "session/drawn_surface.h"
+#include "session/host_services.h"
+#include "session/pose_feed.h"
+#include "session/scene_setup.h"
+
+namespace ig::session {
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop = true; }
+
+// With --multicast GROUP a source's address becomes GROUP (its port kept).
+std::string source_endpoint(const std::string& endpoint, const std::optional<std::string>& group) {
+  if (!group) return endpoint.front() == ':' ? "0.0.0.0" + endpoint : endpoint;
+  return *group + endpoint.substr(endpoint.rfind(':'));
+}
+
+struct Source {
+  io::Protocol protocol;
+  std::unique_ptr<io::net::UdpReceiver> socket;
+};
+
+}  // namespace
+
+int run_live(io::Scenario scenario, const std::string& config, const std::filesystem::path& out,
+             const RunOptions& run, const LiveSettings& s) {
+  if (s.latency == io::LatencyMode::Synchronous && !s.cigi)
+    throw std::runtime_error("latency mode sync is CIGI synchronous operation: it needs --cigi");
+  std::vector<Source> sources;
+  auto open = [&](const std::optional<std::string>& ep, io::Protocol p) {
+    if (ep) sources.push_back({p, std::make_unique<io::net::UdpReceiver>(source_endpoint(*ep, s.multicast))});
+  };
+  open(s.udp, io::Protocol::Native);
+  open(s.cigi, io::Protocol::Cigi);
+  open(s.fgfdm, io::Protocol::FgNetFdm);
+  Source* cigi_source = nullptr;
+  for (auto& src : sources)
+    if (src.protocol == io::Protocol::Cigi) cigi_source = &src;
+  std::unique_ptr<io::net::UdpSender> cigi_reply;
+  if (s.cigi_reply) cigi_reply = std::make_unique<io::net::UdpSender>(*s.cigi_reply);
+  std::unique_ptr<io::RecordingWriter> recorder;
+  if (s.record) recorder = std::make_unique<io::RecordingWriter>(*s.record);
+
+  ScenarioRunner runner(std::move(scenario), run);
+  PoseFeed feed(runner.heightfield());
+  feed.set_latency_mode(s.latency);
+  if (!feed.georeferenced())
+    std::cerr << "ig serve: the terrain has no georeference: only local-frame poses are placed; geodetic "
+                 "packets (CIGI, FlightGear, native geodetic) are counted as rejected\n";
+  const io::Pose initial = runner.pose_at(0.0);
+  // CIGI View Control / View Definition set the channel as a config would.
+  io::HostViewControl views;
+  const io::HostViewControl::ChannelLookup channel_spec = [&runner](std::uint16_t view) -> io::ChannelSpec* {
+    return view < runner.channels().size() ? &runner.channels()[view].spec : nullptr;
+  };
+  // Host services answer CIGI hosts on the reply port and native queries
+  // to their sender, from the terrain as drawn (sharing the scene's
+  // min/max pyramid).
+  std::unique_ptr<HostServices> services;
+  if (cigi_reply || s.udp)
+    services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
+                                              geodetic_placer(runner.heightfield()),
+                                              local_to_geodetic(runner.heightfield()), HostServicesOptions{},
+                                              &runner.scene().height_pyramid());
+  DrawnSurface drawn(runner);
+  if (services && s.host_surface_drawn)
+    services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
+  std::unique_ptr<ControlSurface> control;  // Modbus
+  if (s.modbus) control = make_modbus_surface(*s.modbus, runner, s.latency, s.quiet);
+  std::optional<io::Pose> last_pose;  // for freeze
+  std::unique_ptr<ExtraPoseSource> extra_source;  // SocketCAN
+  if (s.can) extra_source = make_can_source(*s.can);
+
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  RunOutputs outputs(out, "ig serve", !s.quiet && isatty(STDERR_FILENO));
+  const double period = 1.0 / s.rate_hz;
+  const double start = io::net::steady_now_s();
+  double next_tick = start;
+  const int total = s.frames.value_or(0);
+  // capture.times_s and capture.every_s: seconds since the IG started; the
+  // first frame at or after each.
+  CaptureSchedule captures(runner.scenario(), 0.0);
+  double display_lead_s = 0.0;  // frame start -> frame complete, smoothed (the latest mode's lead)
+  std::uint64_t sync_waits = 0, sync_frames = 0;
+  std::optional<std::array<std::uint8_t, io::wire::kCigiStartOfFrameSize>> last_sof;
+  auto poll_source = [&](Source& src, std::size_t max_datagrams) {
+    return src.socket->poll(
+        [&](std::span<const std::uint8_t> d, double t, const sockaddr_in& from) {
+          if (services && src.protocol == io::Protocol::Native && io::wire::is_native_query(d)) {
+            if (const auto answer = services->answer_native(d)) src.socket->send_to(*answer, from);
+            return;
+          }
+          if (recorder) recorder->write(src.protocol, d, t);
+          feed.intake().handle(src.protocol, d, t);
+          if (src.protocol == io::Protocol::Cigi) {
+            if (services && cigi_reply) services->take(d);  // answered only with somewhere to send them
+            views.take(d, channel_spec);
+          }
+        },
+        max_datagrams);
+  };
+  for (int k = 0;; ++k) {
+    // The mode in effect is the filter's (Modbus may change it at a frame boundary).
+    const bool sync = feed.filter().latency_mode() == io::LatencyMode::Synchronous && cigi_source;
+    if (sync) {
+      // CIGI synchronous operation: this frame is the host's next IG
+      // Control. Read the CIGI socket one datagram at a time until one
+      // carries it; while the host is silent, repeat the last Start Of Frame
+      // every 0.25 s so a host that waits for it can (re)start. Before the
+      // first frame that is a Start Of Frame for IG frame 0 (CigiMiniHost
+      // waits for one before its first datagram).
+      const std::uint64_t before = feed.intake().ig_controls();
+      auto announce = [&] {
+        if (!cigi_reply) return;
+        if (!last_sof)
+          last_sof = io::wire::encode_cigi_start_of_frame(0, 0, 0, io::wire::kCigiModeOperate, false);
+        cigi_reply->send(*last_sof);
+      };
+      if (k == 0) announce();
+      while (feed.intake().ig_controls() == before && !g_stop) {
+        if (poll_source(*cigi_source, 1) > 0) continue;
+        if (s.seconds && io::net::steady_now_s() - start >= *s.seconds) break;
+        if (!cigi_source->socket->wait_readable(0.25)) {
+          ++sync_waits;
+          announce();
+        }
+      }
+      // No host frame came (stopped, or --seconds ran out): no frame for it.
+      if (feed.intake().ig_controls() == before) break;
+      ++sync_frames;
+    }
+    // Poll every source: whatever has arrived, never waiting. The frame
+    // starts after, so every receive time is in its past.
+    for (auto& src : sources)
+      if (!sync || &src != cigi_source) poll_source(src, 4096);
+    if (extra_source) extra_source->poll(feed);
+    const double frame_start = io::net::steady_now_s();
+    const bool last = (s.frames && k == *s.frames - 1) ||
+                      (s.seconds && frame_start - start + (sync ? 0.0 : period) >= *s.seconds) || g_stop;
+    // Controls take effect here, at the frame boundary, before rendering.
+    bool capture = captures.take(frame_start - start), frozen = false;
+    if (control) {
+      const auto applied = control->apply_controls();
+      capture = capture || applied.capture;
+      frozen = applied.frozen;
+      if (applied.latency) {
+        if (*applied.latency == io::LatencyMode::Synchronous && !cigi_source) {
+          std::cerr << "ig serve: modbus: latency_mode 2 (CIGI synchronous) needs --cigi; keeping "
+                    << io::latency_mode_name(feed.filter().latency_mode()) << "\n";
+        } else {
+          feed.set_latency_mode(*applied.latency);
+          if (!s.quiet)
+            std::cerr << "ig serve: modbus: latency mode " << io::latency_mode_name(*applied.latency) << "\n";
+        }
+      }
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    // Frozen: the last pose again; the sources are still drained and counted.
+    const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
+    last_pose = pose;
+    const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
+    const double complete = io::net::steady_now_s();  // the renderer ends with glFinish
+    feed.frame_complete(complete);
+    display_lead_s += 0.1 * (std::min(complete - frame_start, 2.0 * period) - display_lead_s);
+    if (cigi_reply) {
+      last_sof = io::wire::encode_cigi_start_of_frame(
+          std::uint32_t(k), feed.intake().last_host_frame().value_or(0),
+          std::uint32_t(std::llround((frame_start - start) * 1e5)), io::wire::kCigiModeOperate, false);
+      cigi_reply->send(services->frame_datagram(*last_sof, pose));  // with this frame's answers
+    } else if (services) {
+      services->answer_frame(pose);  // the frame ends: a new native budget
+    }
+    outputs.frame(runner, f, capture, last, total, [&](std::vector<stats::Cell>& row) { feed.append_columns(row); });
+    if (control)
+      control->publish(k + 1, frame_start, io::net::steady_now_s(), feed, last,
+                       extra_source ? extra_source->status() : ExtraSourceStatus{});
+    if (last || (!runner.context().headless() && runner.window_closed())) break;
+    if (runner.context().headless() && !sync) {
+      // Own rate; a window paces on vsync; synchronous mode on the host.
+      next_tick += period;
+      const double now = io::net::steady_now_s();
+      if (next_tick > now) std::this_thread::sleep_for(std::chrono::duration<double>(next_tick - now));
+      else next_tick = now;  // overran: do not try to catch up
+    } else {
+      next_tick = io::net::steady_now_s();
+    }
+  }
+  std::uint64_t kernel_stamped = 0, datagrams = 0;
+  for (const auto& src : sources) {
+    kernel_stamped += src.socket->stats().kernel_timestamps;
+    datagrams += src.socket->stats().datagrams;
+  }
+  nlohmann::json extra = {{"pose_intake", feed.summary()},
+                          {"rate_hz", s.rate_hz},
+                          {"latency_mode", io::latency_mode_name(feed.filter().latency_mode())},
+                          {"datagrams", datagrams},
+                          {"kernel_receive_timestamps", kernel_stamped}};
+  if (cigi_source) extra["cigi_sync"] = {{"frames", sync_frames}, {"waits", sync_waits}};
+  if (services) extra["host_services"] = services->summary();
+  if (cigi_source) extra["view_control"] = views.summary();
+  if (recorder) extra["recording"] = {{"file", *s.record}, {"datagrams", recorder->count()}};
+  if (extra_source) extra[extra_source->summary_key()] = extra_source->summary();
+  if (control) extra["modbus"] = control->summary();
+  return outputs.finish(runner, config, extra);
+}
+
+}  // namespace ig::session
