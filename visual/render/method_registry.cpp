@@ -22,7 +22,7 @@ std::vector<std::string> method_names() {
   return {"twolevel", "reference", "roam", "geomipmap", "chunked", "quadtree", "cdlod"};
 }
 
-std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
+std::unique_ptr<TerrainMethod> make_method(const std::string& name, TerrainScene& scene,
                                            const std::string& shader_dir, const TwoLevelOptions& twolevel,
                                            std::optional<double> knob) {
   // Beyond the GL texture limit only the two-level method draws (it reads

@@ -90,7 +90,7 @@ std::vector<std::string> method_names();
 // Throws std::invalid_argument naming the method and the choices. `knob`
 // overrides the method's error knob (its default when nullopt); methods
 // without a knob ignore it.
-std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
+std::unique_ptr<TerrainMethod> make_method(const std::string& name, TerrainScene& scene,
                                            const std::string& shader_dir, const TwoLevelOptions& twolevel,
                                            std::optional<double> knob = std::nullopt);
 // The knob values `ig bench --sweep` runs for a method, from least to most

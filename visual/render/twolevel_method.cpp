@@ -20,7 +20,7 @@ TwoLevelOptions with_budget(TwoLevelOptions o) {
 
 }  // namespace
 
-TwoLevelMethod::TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
+TwoLevelMethod::TwoLevelMethod(TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options)
     : scene_(scene),
       options_(with_budget(std::move(options))),
       pyramid_(scene.height_pyramid()),

@@ -27,7 +27,7 @@ using options::TwoLevelOptions;  // options/twolevel_options.h
 
 class TwoLevelMethod final : public TerrainMethod {
  public:
-  TwoLevelMethod(const TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options = {});
+  TwoLevelMethod(TerrainScene& scene, const std::string& shader_dir, TwoLevelOptions options = {});
   ~TwoLevelMethod() override;
   std::string name() const override { return "twolevel"; }
   std::vector<std::string> column_names() const override;
@@ -73,7 +73,7 @@ class TwoLevelMethod final : public TerrainMethod {
   // height window on Level1.
   void apply_scene_requests(const lod::TwoLevelSceneRequests& requests);
 
-  const TerrainScene& scene_;
+  TerrainScene& scene_;  // its windows follow Level1; tiles are asked for
   int windows_ = -1;  // the scene's window set this method keeps on its Level1 (TerrainScene::claim_windows)
   TwoLevelOptions options_;
   const terrain::HeightPyramid& pyramid_;  // the scene's, shared across channels
