@@ -67,21 +67,29 @@ TwoLevelSelector::TwoLevelSelector(const terrain::Heightfield& hf, const terrain
 
 bool TwoLevelSelector::place_level1(const TwoLevelView& view, double ratio, const glm::dvec2& eye,
                                     const Level1Paging& paging) {
-  const auto& hf = hf_;
   // Paged heights, live: after the first frame nothing here waits on a
-  // tile. A read of one that is not resident queues it and throws; a square
-  // whose heights (square, band, height window) are not all in is refused.
-  // Either way Level1 keeps last frame's square until they are.
+  // tile. Reads go through resident-only views that queue what is missing
+  // and count it; a square whose heights (square, band, height window) are
+  // not all in is refused. Either way Level1 keeps last frame's square
+  // until they are.
   const bool no_wait = paging.no_wait && sel_.n > 0;
-  std::optional<terrain::HeightTileCache::NoWait> no_wait_reads;
-  if (hf.paged && no_wait) no_wait_reads.emplace();
-  try {
+  terrain::TileMisses misses;
+  std::optional<terrain::Heightfield> hf_view;
+  std::optional<terrain::HeightPyramid> pyramid_view;
+  if (no_wait && hf_.paged) {
+    hf_view.emplace(hf_.resident_only(misses));
+    pyramid_view.emplace(pyramid_.resident_only(misses));
+  }
+  const terrain::Heightfield& hf = hf_view ? *hf_view : hf_;
+  const terrain::HeightPyramid& pyramid = pyramid_view ? *pyramid_view : pyramid_;
+  {
     const LookAtPoint e =
-        find_look_at_point(hf, pyramid_, view.position, view.forward, view.up, view.earth_radius_m);
+        find_look_at_point(hf, pyramid, view.position, view.forward, view.up, view.earth_radius_m);
     // Snap E to a whole sample and keep the square inside the DEM.
     const glm::ivec2 ec{int(std::lround(e.point.x / hf.spacing_x_m)), int(std::lround(e.point.y / hf.spacing_y_m))};
     const double eye_agl =
         options_.eye_guard ? view.position.z - hf.sample_bilinear(view.position.x, view.position.y) : 0.0;
+    if (misses.count > 0) return false;
     int n = 0;
     // Level1 is worth its vertices only where Level0's error would show. When
     // even the largest square around E reaches no terrain nearer than where
@@ -102,8 +110,9 @@ bool TwoLevelSelector::place_level1(const TwoLevelView& view, double ratio, cons
         for (int x = 0; x < kRaysX; ++x)
           prediction_rays_.push_back(
               view.pixel_ray((x + 0.5) * view.viewport.x / kRaysX, (y + 0.5) * view.viewport.y / kRaysY));
-      auto p = predict_level1_coverage(hf, pyramid_, view.position, prediction_rays_, view.far_m, ec,
+      auto p = predict_level1_coverage(hf, pyramid, view.position, prediction_rays_, view.far_m, ec,
                                        controller_.ladder());
+      if (misses.count > 0) return false;  // before the controller moves
       // Paged heights: keep the tiles under the view resident.
       auto& points = sel_.scene_requests.points_m;
       points.insert(points.end(), p.hits.begin(), p.hits.end());
@@ -129,8 +138,6 @@ bool TwoLevelSelector::place_level1(const TwoLevelView& view, double ratio, cons
     sel_.n = place.n;
     sel_.origin = origin;
     return true;
-  } catch (const terrain::TileNotResident&) {
-    return false;
   }
 }
 
@@ -172,14 +179,14 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
   // Level1 does not hold the eye): lod/horizon_culling.h.
   const bool eye_in_square =
       eye.x >= origin.x && eye.y >= origin.y && eye.x <= origin.x + n - 1 && eye.y <= origin.y + n - 1;
-  bool eye_above = false;
-  try {  // paged heights: no wait for the ground under the eye; not in yet, no culling this frame
-    std::optional<terrain::HeightTileCache::NoWait> no_wait;
-    if (hf.paged && paging.no_wait) no_wait.emplace();
-    eye_above = terrain::back_faces_hidden(hf, view.position) &&
-                (eye_in_square || view.position.z > level0_heights_.height_at(eye.x, eye.y));
-  } catch (const terrain::TileNotResident&) {
-  }
+  // Paged heights, live: no wait for the ground under the eye; not in yet,
+  // no culling this frame.
+  terrain::TileMisses misses;
+  const bool no_wait = hf.paged && paging.no_wait;
+  const bool over_ground = no_wait ? terrain::back_faces_hidden(hf.resident_only(misses), view.position)
+                                   : terrain::back_faces_hidden(hf, view.position);
+  const bool eye_above = over_ground && misses.count == 0 &&
+                         (eye_in_square || view.position.z > level0_heights_.height_at(eye.x, eye.y));
   int hidden_count = 0;
   MarkHidden occlusion;
   if (horizon_ && eye_above)

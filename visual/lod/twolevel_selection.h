@@ -46,9 +46,10 @@ struct TwoLevelView {
   std::function<glm::ivec4(const glm::dvec3& lo, const glm::dvec3& hi)> screen_rect;
 };
 
-// Paged heights, live: whether the selection must not wait for tiles, and
-// whether the heights a square needs (samples [lo, hi] and the height window
-// centred on window_centre) are all resident; asking may queue them.
+// Paged heights, live (no_wait): the selection must not wait for tiles,
+// and a new square is taken only when ready() says the heights it needs
+// (samples [lo, hi] and the height window centred on window_centre) are all
+// resident; asking may queue them.
 struct Level1Paging {
   bool no_wait = false;
   std::function<bool(glm::ivec2 lo, glm::ivec2 hi, glm::ivec2 window_centre)> ready;
