@@ -1,6 +1,6 @@
 #pragma once
 // Full-resolution heights around a point, for DEMs larger than one GL
-// texture (issue 16): a size x size R32F texture holding the window
+// texture: a size x size R32F texture holding the window
 // terrain::ToroidalWindow describes, addressed wrap-around (sample (i, j) in
 // texel (i mod size, j mod size), GL_REPEAT), so a shader reads sample s at
 // texel coordinate (s + 0.5) / size while s is inside the window, with

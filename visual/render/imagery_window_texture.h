@@ -1,6 +1,6 @@
 #pragma once
 // Full-resolution imagery around a point, for imagery finer than one GL
-// texture (issue 16): the scene draws an overview of the image everywhere
+// texture: the scene draws an overview of the image everywhere
 // and this size x size RGB8 wrap-around window (render/window_texture.h) of
 // the full image where it covers a fragment. It follows the same point as
 // the height window (Level1's centre, in DEM samples); a move uploads only

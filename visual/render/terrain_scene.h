@@ -43,7 +43,7 @@ using ShadingParams = options::ShadingOptions;  // options/shading_options.h
 class TerrainScene {
  public:
   // Side of the overview of a DEM beyond the GL texture limit, and of the
-  // height window it then always has (issue 16).
+  // height window it then always has.
   static constexpr int kOverviewSide = 4097;
   static constexpr int kDefaultHeightWindow = 4096;
   // Paged heights: the window is made smaller when its tiles and the ring
@@ -98,7 +98,7 @@ class TerrainScene {
   bool has_imagery() const { return bool(imagery_tex_); }
   // Imagery finer than the texture limit: the imagery texture is its
   // overview and this window holds full resolution around the point
-  // follow_window() is given (issue 16); null otherwise. Only methods that
+  // follow_window() is given; null otherwise. Only methods that
   // call follow_window (twolevel) can draw it.
   const ImageryWindowTexture* imagery_window(int set = 0) const { return windows_[set].imagery.get(); }
   double upload_ms() const { return upload_ms_; }
@@ -110,7 +110,7 @@ class TerrainScene {
   const terrain::HeightPyramid& height_pyramid() const { return *pyramid_; }
 
   // Full-resolution heights around a point in a size x size wrap-around
-  // texture (render/height_window_texture.h; issue 16, terrain beyond one
+  // texture (render/height_window_texture.h: terrain beyond one
   // texture). size <= 0: none (the default), except with an overview, which
   // always keeps a window (kDefaultHeightWindow when size <= 0). Without an
   // overview the whole-DEM texture stays and serves every read outside the
