@@ -8,6 +8,11 @@
 // (clipped to outside the Level1 square, depth-tested against Level1, band
 // pixels shaded with the blended coordinate), then a coverage count whose
 // result steers next frame's Level1 size.
+// The frame's CPU step is lod::TwoLevelSelector (lod/twolevel_selection.h:
+// a TwoLevelSelection value), the passes are gl::TwoLevelPasses
+// (gl/twolevel_passes.h); this class joins them to the scene: the view and
+// paging state in, the selection's scene requests (tiles, the height
+// window's centre) applied to the scene, the scene's textures bound.
 
 #include <memory>
 #include <optional>
