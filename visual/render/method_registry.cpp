@@ -32,7 +32,7 @@ namespace {
 
 }  // namespace
 
-std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
+std::unique_ptr<TerrainMethod> make_method(const std::string& name, TerrainScene& scene,
                                            const std::string& shader_dir, const MethodOptions& options,
                                            std::optional<double> knob) {
   // Beyond the GL texture limit only the two-level method draws (it reads

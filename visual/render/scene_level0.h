@@ -3,7 +3,7 @@
 // height texture holds (the DEM, or beyond the GL texture limit its overview,
 // terrain/heightfield_overview.h), with sample indices and positions given
 // in the DEM's own samples, so Level0's vertices are DEM samples either way
-// (issue 16: a 20481^2 DEM's Level0 is built on a 4097^2 overview).
+// (e.g. a 20481^2 DEM's Level0 is built on a 4097^2 overview).
 
 #include "lod/roam_level0_mesh.h"
 #include "render/terrain_scene.h"

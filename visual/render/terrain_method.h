@@ -118,7 +118,7 @@ std::vector<std::string> method_names();
 // Throws std::invalid_argument naming the method and the choices. The
 // method takes its own struct of `options`; `knob` overrides its error knob
 // there (for sweeps); methods without a knob ignore it.
-std::unique_ptr<TerrainMethod> make_method(const std::string& name, const TerrainScene& scene,
+std::unique_ptr<TerrainMethod> make_method(const std::string& name, TerrainScene& scene,
                                            const std::string& shader_dir, const MethodOptions& options,
                                            std::optional<double> knob = std::nullopt);
 // The error knob a method built from `options` would report, read from the

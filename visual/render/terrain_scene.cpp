@@ -6,7 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "gl/coverage_codes.h"
 #include "gl/gl_context.h"
+#include "gl/terrain_textures.h"
 #include "terrain/detail_noise.h"
 #include "terrain/heightfield_overview.h"
 #include "terrain/imagery_loader.h"
@@ -18,25 +20,9 @@ namespace {
 // the same at an unrelated size so no repeat shows, broad patches.
 constexpr float kDetailTileM[3] = {32.0f, 87.3f, 2048.0f};
 
-// An RGB(A) 8-bit texture with its whole mip chain.
-gl::Texture upload_mipmapped(GLenum internal_format, GLenum format, int width, int height, const void* pixels,
-                             GLint wrap) {
-  gl::Texture t = gl::create_texture(GL_TEXTURE_2D);
-  const int levels = 1 + int(std::floor(std::log2(std::max(width, height))));
-  glTextureStorage2D(t.id(), levels, internal_format, width, height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(t.id(), 0, 0, 0, width, height, format, GL_UNSIGNED_BYTE, pixels);
-  glGenerateTextureMipmap(t.id());
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, wrap);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, wrap);
-  return t;
-}
-
 gl::Texture upload_detail_texture() {
   const terrain::DetailNoise noise = terrain::make_detail_noise();
-  return upload_mipmapped(GL_RGBA8, GL_RGBA, noise.size, noise.size, noise.rgba.data(), GL_REPEAT);
+  return gl::upload_colour_texture(noise.size, noise.size, noise.rgba.data(), /*rgba=*/true, /*repeat=*/true);
 }
 }  // namespace
 
@@ -47,8 +33,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   if (hf.width < 2 || hf.height < 2 || !hf.has_samples())
     throw std::invalid_argument(hf.source + ": " + std::to_string(hf.width) + "x" + std::to_string(hf.height) +
                                 " samples: a terrain needs at least 2 x 2 samples to form a surface");
-  GLint max_size = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  const int max_size = gl::max_texture_size();
   set_sun_direction(shading_.sun_direction.value_or(ShadingParams::kDefaultSunDirection));
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -71,17 +56,11 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     windows_[0].height = std::make_unique<HeightWindowTexture>(hf, window);
   }
   const terrain::Heightfield& tex = texture_heightfield();
-  height_tex_ = gl::create_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(height_tex_.id(), 1, GL_R32F, tex.width, tex.height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(height_tex_.id(), 0, 0, 0, tex.width, tex.height, GL_RED, GL_FLOAT, tex.heights.data());
-  glTextureParameteri(height_tex_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(height_tex_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(height_tex_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(height_tex_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  height_tex_ = gl::upload_height_texture(tex.width, tex.height, tex.heights.data());
   if (shading_.ground_detail) detail_tex_ = upload_detail_texture();
-  glFinish();  // so upload_ms is the real transfer, not just the enqueue
+  gl::finish();  // so upload_ms is the real transfer, not just the enqueue
   upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  pyramid_ = std::make_unique<terrain::HeightPyramid>(hf);
 
   if (imagery_path) {
     // Georeferenced imagery is warped onto the DEM's footprint (terrain/imagery_loader.h).
@@ -94,7 +73,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
     } catch (const std::exception& e) {
       throw gl::GlError(e.what());
     }
-    imagery_tex_ = upload_mipmapped(GL_RGB8, GL_RGB, img.width, img.height, img.rgb.data(), GL_CLAMP_TO_EDGE);
+    imagery_tex_ = gl::upload_colour_texture(img.width, img.height, img.rgb.data(), /*rgba=*/false, /*repeat=*/false);
     imagery_uncovered_ = img.uncovered;
     imagery_overview_step_ = img.full_step;
     // The overview spans whole blocks, a little more than the footprint
@@ -133,28 +112,27 @@ Camera TerrainScene::local_camera(const Camera& world) const {
 void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera, int windows) const {
   const HeightWindowTexture* height_window = windows >= 0 ? windows_[windows].height.get() : nullptr;
   const ImageryWindowTexture* imagery_window = windows >= 0 ? windows_[windows].imagery.get() : nullptr;
-  glBindTextureUnit(0, height_tex_.id());
-  p.set("u_height", 0);
+  using gl::TextureUnit;
+  gl::bind_texture(TextureUnit::kHeight, height_tex_);
+  p.set("u_height", gl::unit(TextureUnit::kHeight));
   p.set("u_has_imagery", has_imagery() ? 1 : 0);
   if (has_imagery()) {
-    glBindTextureUnit(1, imagery_tex_.id());
-    p.set("u_imagery", 1);
+    gl::bind_texture(TextureUnit::kImagery, imagery_tex_);
+    p.set("u_imagery", gl::unit(TextureUnit::kImagery));
     p.set("u_imagery_overview_scale", imagery_overview_scale_);
   }
-  // The height window on unit 5 (units 2-4 are the two-level method's).
   const bool windowed = height_window && height_window->placed();
   if (windowed) {
-    glBindTextureUnit(5, height_window->id());
-    p.set("u_height_window", 5);
+    gl::bind_texture(TextureUnit::kHeightWindow, height_window->id());
+    p.set("u_height_window", gl::unit(TextureUnit::kHeightWindow));
   }
   p.set("u_window_origin", windowed ? height_window->origin() : glm::ivec2(0));
   p.set("u_window_size", windowed ? height_window->size() : glm::ivec2(0));
   p.set("u_overview_step", overview_step_);
-  // The imagery window on unit 6.
   const bool imagery_windowed = imagery_window && imagery_window->placed();
   if (imagery_windowed) {
-    glBindTextureUnit(6, imagery_window->id());
-    p.set("u_imagery_window", 6);
+    gl::bind_texture(TextureUnit::kImageryWindow, imagery_window->id());
+    p.set("u_imagery_window", gl::unit(TextureUnit::kImageryWindow));
     p.set("u_imagery_full_size", imagery_window->full_size());
     p.set("u_imagery_overview_lod", std::log2(float(imagery_overview_step_)));
   }
@@ -173,12 +151,12 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   p.set("u_sun_dir", sky_light_.light_direction);
   p.set("u_light_color", sky_light_.light_colour);
   p.set("u_ambient", sky_light_.ambient);
-  // Ground detail on unit 7 (programs linked with ground_detail.frag): the
+  // Ground detail (programs linked with ground_detail.frag): the
   // tiles' phase at a whole sample near the eye, in double (a float product
   // of a large sample index would lose it).
   if (detail_tex_ && p.location("u_detail") >= 0) {
-    glBindTextureUnit(7, detail_tex_.id());
-    p.set("u_detail", 7);
+    gl::bind_texture(TextureUnit::kGroundDetail, detail_tex_);
+    p.set("u_detail", gl::unit(TextureUnit::kGroundDetail));
     const glm::dvec2 spacing(heightfield_.spacing_x_m, heightfield_.spacing_y_m);
     const glm::dvec2 anchor = glm::floor(glm::dvec2(camera.position) / spacing);
     p.set("u_detail_anchor", glm::vec2(anchor));
@@ -195,7 +173,7 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   p.set("u_fog_k", float(k));
   p.set("u_view_proj", camera.view_projection());
   p.set("u_earth_radius_m", float(camera.earth_radius_m));
-  p.set("u_alpha", 1.0f);
+  p.set("u_alpha", gl::coverage::kLevel1);
 }
 
 void TerrainScene::set_sun_direction(const glm::vec3& towards_sun) {
@@ -209,7 +187,7 @@ void TerrainScene::enable_height_window(int size) {
     set.height = size > 0 ? std::make_unique<HeightWindowTexture>(heightfield_, size) : nullptr;
 }
 
-int TerrainScene::claim_windows() const {
+int TerrainScene::claim_windows() {
   for (std::size_t k = 0; k < windows_in_use_.size(); ++k)
     if (!windows_in_use_[k]) {
       windows_in_use_[k] = true;
@@ -225,11 +203,11 @@ int TerrainScene::claim_windows() const {
   return int(windows_.size()) - 1;
 }
 
-void TerrainScene::release_windows(int set) const {
+void TerrainScene::release_windows(int set) {
   if (set >= 0 && set < int(windows_in_use_.size())) windows_in_use_[set] = false;
 }
 
-void TerrainScene::place_imagery_window(glm::ivec2 centre) const {
+void TerrainScene::place_imagery_window(glm::ivec2 centre) {
   for (const Windows& set : windows_)
     if (set.imagery) {
       set.imagery->centre_on_sample(centre, /*wait=*/true);
@@ -237,7 +215,7 @@ void TerrainScene::place_imagery_window(glm::ivec2 centre) const {
     }
 }
 
-void TerrainScene::prefetch_heights(const std::vector<glm::dvec3>& points_m) const {
+void TerrainScene::prefetch_heights(const std::vector<glm::dvec3>& points_m) {
   if (!heightfield_.paged) return;
   const terrain::HeightTileCache& cache = *heightfield_.paged->cache;
   const int half = cache.tile_size() / 2;
@@ -247,7 +225,7 @@ void TerrainScene::prefetch_heights(const std::vector<glm::dvec3>& points_m) con
   }
 }
 
-void TerrainScene::prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) const {
+void TerrainScene::prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) {
   if (!heightfield_.paged) return;
   const terrain::HeightTileCache& cache = *heightfield_.paged->cache;
   const int t = cache.tile_size();
@@ -259,7 +237,7 @@ bool TerrainScene::samples_resident(glm::ivec2 lo, glm::ivec2 hi) const {
   return heightfield_.paged->cache->resident_rect(lo.x, lo.y, hi.x - lo.x + 1, hi.y - lo.y + 1);
 }
 
-bool TerrainScene::window_ready(int set, glm::ivec2 centre) const {
+bool TerrainScene::window_ready(int set, glm::ivec2 centre) {
   const HeightWindowTexture* window = windows_[set].height.get();
   if (!window || !heightfield_.paged) return true;
   window->prefetch_around(centre);
@@ -267,15 +245,10 @@ bool TerrainScene::window_ready(int set, glm::ivec2 centre) const {
   return samples_resident(o, o + s - 1);
 }
 
-long long TerrainScene::follow_window(int set, glm::ivec2 centre) const {
+long long TerrainScene::follow_window(int set, glm::ivec2 centre) {
   const Windows& w = windows_[set];
   if (w.imagery) w.imagery->centre_on_sample(centre, wait_for_pages_);  // live: held until its tiles are in
   return w.height ? w.height->centre_on(centre) : 0;
-}
-
-const terrain::HeightPyramid& TerrainScene::height_pyramid() const {
-  if (!pyramid_) pyramid_ = std::make_unique<terrain::HeightPyramid>(heightfield_);
-  return *pyramid_;
 }
 
 }  // namespace ig::render

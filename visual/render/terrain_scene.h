@@ -16,8 +16,6 @@
 // the methods in Camera::earth_radius_m (culling) and to every terrain vertex
 // shader through bind_common (u_earth_radius_m).
 
-#include <epoxy/gl.h>
-
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -45,7 +43,7 @@ using ShadingParams = options::ShadingOptions;  // options/shading_options.h
 class TerrainScene {
  public:
   // Side of the overview of a DEM beyond the GL texture limit, and of the
-  // height window it then always has (issue 16).
+  // height window it then always has.
   static constexpr int kOverviewSide = 4097;
   static constexpr int kDefaultHeightWindow = 4096;
   // Paged heights: the window is made smaller when its tiles and the ring
@@ -88,7 +86,7 @@ class TerrainScene {
   // time_utc); used from the next bind_common.
   const environment::SkyLight& sky_light() const { return sky_light_; }
   void set_sun_direction(const glm::vec3& towards_sun);
-  GLuint height_texture() const { return height_tex_.id(); }
+  const gl::Texture& height_texture() const { return height_tex_; }
   // DEM samples per height-texture sample: 1 when the texture is the whole
   // DEM, > 1 when it is an overview (the DEM exceeds the texture limit).
   int overview_step() const { return overview_step_; }
@@ -100,19 +98,19 @@ class TerrainScene {
   bool has_imagery() const { return bool(imagery_tex_); }
   // Imagery finer than the texture limit: the imagery texture is its
   // overview and this window holds full resolution around the point
-  // follow_window() is given (issue 16); null otherwise. Only methods that
+  // follow_window() is given; null otherwise. Only methods that
   // call follow_window (twolevel) can draw it.
   const ImageryWindowTexture* imagery_window(int set = 0) const { return windows_[set].imagery.get(); }
   double upload_ms() const { return upload_ms_; }
   // Imagery texels of the DEM's footprint the image did not cover (grey).
   std::int64_t imagery_uncovered() const { return imagery_uncovered_; }
   // The min/max pyramid of the heightfield (ray casts, culling bounds),
-  // built on first use and shared by every method and channel on this scene:
+  // built with the scene and shared by every method and channel on this scene:
   // it is view-independent (5.6 MB for a 4097^2 DEM, terrain/height_pyramid.h).
-  const terrain::HeightPyramid& height_pyramid() const;
+  const terrain::HeightPyramid& height_pyramid() const { return *pyramid_; }
 
   // Full-resolution heights around a point in a size x size wrap-around
-  // texture (render/height_window_texture.h; issue 16, terrain beyond one
+  // texture (render/height_window_texture.h: terrain beyond one
   // texture). size <= 0: none (the default), except with an overview, which
   // always keeps a window (kDefaultHeightWindow when size <= 0). Without an
   // overview the whole-DEM texture stays and serves every read outside the
@@ -128,26 +126,26 @@ class TerrainScene {
   // channel has its own method): claim_windows() gives a free set's index,
   // 0 first (the set the scene made), a new set of the same sizes when all
   // are in use; release_windows() frees it for the next method.
-  int claim_windows() const;
-  void release_windows(int set) const;
+  int claim_windows();
+  void release_windows(int set);
   int window_sets() const { return int(windows_.size()); }
   // Centres window set `set`'s height window on sample `centre` (clamped to
   // the DEM), uploading what scrolled in; returns the samples uploaded (0
   // without a window). Its imagery window, if any, follows too (its pixels
-  // are not counted). const: the windows are caches of what the scene serves.
-  long long follow_window(int set, glm::ivec2 centre) const;
+  // are not counted).
+  long long follow_window(int set, glm::ivec2 centre);
   const HeightWindowTexture* height_window(int set = 0) const { return windows_[set].height.get(); }
   // Places every set's imagery window (if any) on sample `centre` ahead of
   // the first frame, so its first fill (and a tile of margin: the tiles are
   // read, the call waits) is part of the load, not of a frame.
-  void place_imagery_window(glm::ivec2 centre) const;
+  void place_imagery_window(glm::ivec2 centre);
   // Paged heights (terrain/paged_heights.h): asks the tile cache's background
   // thread for the tiles within half a tile of each point (terrain-local
   // metres), e.g. where the view rays hit, so next frame's ray casts find
   // them resident. Nothing for heights held whole.
-  void prefetch_heights(const std::vector<glm::dvec3>& points_m) const;
+  void prefetch_heights(const std::vector<glm::dvec3>& points_m);
   // The same for samples [lo, hi] (inclusive) and one tile around them.
-  void prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) const;
+  void prefetch_samples(glm::ivec2 lo, glm::ivec2 hi);
   // Paged heights: whether a frame may wait for tiles (a deterministic
   // replay) or must not (live: Level1 keeps its square until they are in;
   // render/twolevel_method.cpp). Default false.
@@ -159,7 +157,7 @@ class TerrainScene {
   // The same for what follow_window(set, centre) would read: that set's
   // height window centred there (true without a window or paging); asks the
   // background thread for it (and one tile around) too.
-  bool window_ready(int set, glm::ivec2 centre) const;
+  bool window_ready(int set, glm::ivec2 centre);
 
   // World position of sample (0, 0) at height 0 (default: the origin).
   const glm::dvec3& world_origin() const { return world_origin_; }
@@ -196,13 +194,13 @@ class TerrainScene {
   // than the footprint; 1 for imagery that fits: u_imagery_overview_scale).
   int imagery_overview_step_ = 1;
   glm::vec2 imagery_overview_scale_{1.0f};
-  mutable std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
+  std::unique_ptr<terrain::HeightPyramid> pyramid_;  // see height_pyramid()
   struct Windows {
     std::unique_ptr<HeightWindowTexture> height;    // see enable_height_window()
     std::unique_ptr<ImageryWindowTexture> imagery;  // see imagery_window()
   };
-  mutable std::vector<Windows> windows_ = std::vector<Windows>(1);  // see claim_windows()
-  mutable std::vector<bool> windows_in_use_ = std::vector<bool>(1, false);
+  std::vector<Windows> windows_ = std::vector<Windows>(1);  // see claim_windows()
+  std::vector<bool> windows_in_use_ = std::vector<bool>(1, false);
   // Paged imagery beyond the texture limit, for the imagery windows of the
   // sets made after the first (its overview pixels dropped: they are the
   // imagery texture); null otherwise.

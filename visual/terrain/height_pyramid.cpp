@@ -59,6 +59,20 @@ HeightPyramid HeightPyramid::from_level2(int width, int height, std::shared_ptr<
 
 HeightPyramid::MinMax HeightPyramid::paged_node(int i0, int j0, int span) const {
   const int i1 = std::min(i0 + span, width_ - 1), j1 = std::min(j0 + span, height_ - 1);
+  if (misses_) {  // resident-only: no wait; the level-2 node holds these samples
+    float lo = 0.f, hi = 0.f;
+    for (int r = j0; r <= j1; ++r)
+      for (int c = i0; c <= i1; ++c) {
+        const auto v = pages_->at_if_resident(c, r);
+        if (!v) {
+          ++misses_->count;
+          return levels_.size() > 2 ? node(2, i0 >> 2, j0 >> 2) : root_;
+        }
+        lo = r == j0 && c == i0 ? *v : std::min(lo, *v);
+        hi = r == j0 && c == i0 ? *v : std::max(hi, *v);
+      }
+    return MinMax{lo, hi};
+  }
   float lo = pages_->at(i0, j0), hi = lo;
   for (int r = j0; r <= j1; ++r)
     for (int c = i0; c <= i1; ++c) {

@@ -68,6 +68,15 @@ class HeightPyramid {
   // min/max of all samples. Levels 0 and 1 read through `pages`.
   static HeightPyramid from_level2(int width, int height, std::shared_ptr<const HeightTileCache> pages,
                                    const std::vector<MinMax>& level2, MinMax root);
+  // Paged levels 0 and 1 read without waiting (a live frame): a node over a
+  // tile that is not resident queues the tile, counts in `misses` and
+  // answers its level-2 parent's bounds (conservative). A copy sharing the
+  // stored levels; `misses` must outlive it. Whole pyramids never wait.
+  HeightPyramid resident_only(TileMisses& misses) const {
+    HeightPyramid p = *this;
+    if (pages_) p.misses_ = &misses;
+    return p;
+  }
   // Level-2 nodes a side of a grid of `samples` a side: ceil((samples - 1) / 4).
   static int level2_side(int samples) { return (samples / 2 + 1) / 2; }
 
@@ -166,6 +175,7 @@ class HeightPyramid {
   const Quantised* nodes_ = nullptr;                  // storage_->data()
   const float* heights_ = nullptr;  // the heightfield's (level 0); null when paged
   std::shared_ptr<const HeightTileCache> pages_;      // paged level 0
+  TileMisses* misses_ = nullptr;                      // set in a resident-only view
   int width_ = 0, height_ = 0;       // samples per row / rows of heights_
   MinMax root_{0.f, 0.f};
   float base_ = 0.f, step_ = 1.f;  // height = base_ + q * step_

@@ -6,13 +6,6 @@
 #include <stdexcept>
 
 namespace ig::terrain {
-namespace {
-thread_local bool no_wait = false;  // see TileNoWait
-}  // namespace
-
-TileNoWait::TileNoWait() : outer_(no_wait) { no_wait = true; }
-TileNoWait::~TileNoWait() { no_wait = outer_; }
-
 template <class T>
 TileCache<T>::TileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader)
     : width_(width),
@@ -74,15 +67,6 @@ typename TileCache<T>::TilePtr TileCache<T>::get(int k) const {
       lru_.splice(lru_.begin(), lru_, it->second.lru);
       return it->second.tile;
     }
-    if (no_wait) {  // queue it next for the background thread; never block
-      if (!loading_.count(k)) {
-        queue_.erase(std::remove(queue_.begin(), queue_.end(), k), queue_.end());
-        queue_.push_front(k);
-        changed_.notify_all();
-      }
-      ++stats_.deferred;
-      throw TileNotResident();
-    }
     if (!counted) {
       ++stats_.misses;
       counted = true;
@@ -106,6 +90,31 @@ typename TileCache<T>::TilePtr TileCache<T>::get(int k) const {
   insert_locked(k, t);
   changed_.notify_all();
   return t;
+}
+
+template <class T>
+typename TileCache<T>::TilePtr TileCache<T>::get_if_resident(int k) const {
+  std::lock_guard lock(mutex_);
+  if (auto it = tiles_.find(k); it != tiles_.end()) {
+    lru_.splice(lru_.begin(), lru_, it->second.lru);
+    return it->second.tile;
+  }
+  if (!loading_.count(k)) {  // next for the background thread
+    queue_.erase(std::remove(queue_.begin(), queue_.end(), k), queue_.end());
+    queue_.push_front(k);
+    changed_.notify_all();
+  }
+  ++stats_.deferred;
+  return nullptr;
+}
+
+template <class T>
+std::optional<T> TileCache<T>::at_if_resident(int i, int j) const {
+  const TilePtr t = get_if_resident(key(i / tile_, j / tile_));
+  if (!t) return std::nullopt;
+  const int x0 = (i / tile_) * tile_, y0 = (j / tile_) * tile_;
+  const int w = std::min(tile_, width_ - x0);
+  return (*t)[static_cast<std::size_t>(j - y0) * w + (i - x0)];
 }
 
 template <class T>

@@ -1,6 +1,6 @@
 #pragma once
 // A grid too large to hold whole, paged in square tiles into an LRU cache
-// bounded by a byte budget (issue 16: terrain beyond a memory budget): the
+// bounded by a byte budget (terrain beyond a memory budget): the
 // heights of a DEM (HeightTileCache, float samples) and full-resolution
 // imagery (RgbTileCache, RGB8 pixels; terrain/imagery_loader.h). One
 // template, TileCache<T>, over the element type. No GL.
@@ -24,11 +24,11 @@
 //
 // try_read_rect() never blocks: it copies a rectangle only when all of its
 // tiles are resident (the imagery window holds its place until they are).
-// And for callers that must not block but read through code that does not
-// know about paging (a frame's look-at ray cast): inside a NoWait scope on
-// the calling thread, at() / read_rect() of a tile that is not resident
-// queue it first for the background thread and throw TileNotResident
-// instead of waiting (Stats::deferred; not a miss).
+// at_if_resident() never blocks either: a sample of a tile that is not
+// resident queues the tile first for the background thread and reads as
+// nothing (Stats::deferred; not a miss). It serves the resident-only views
+// of Heightfield and HeightPyramid (a live frame's look-at ray cast), which
+// count such reads in a TileMisses their caller owns.
 //
 // Eviction: least recently used first, after every insertion, until the
 // resident bytes are within the budget (at least one tile stays, so a
@@ -45,6 +45,7 @@
 #include <list>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -61,23 +62,10 @@ struct Rgb8 {
 };
 static_assert(sizeof(Rgb8) == 3);
 
-// What at() / read_rect() throw inside a TileNoWait scope.
-struct TileNotResident : std::runtime_error {
-  TileNotResident() : std::runtime_error("tile not resident") {}
-};
-
-// On this thread while it lives: reads of tiles that are not resident, from
-// any TileCache, throw TileNotResident (after queueing them) instead of
-// blocking. Nests.
-class TileNoWait {
- public:
-  TileNoWait();
-  ~TileNoWait();
-  TileNoWait(const TileNoWait&) = delete;
-  TileNoWait& operator=(const TileNoWait&) = delete;
-
- private:
-  bool outer_;
+// Reads a resident-only view found not resident (each was queued and read
+// a fallback instead); owned by the reader, who checks it after.
+struct TileMisses {
+  std::int64_t count = 0;
 };
 
 template <class T>
@@ -94,13 +82,11 @@ class TileCache {
     std::int64_t prefetched = 0;   // tiles the background thread loaded
     std::int64_t read_errors = 0;  // background reads that threw (last_error() says why)
     std::int64_t evictions = 0;
-    std::int64_t deferred = 0;     // TileNotResident thrown in a NoWait scope
+    std::int64_t deferred = 0;     // at_if_resident() reads of tiles not resident (queued, not waited for)
     std::size_t resident_bytes = 0;
     std::size_t peak_resident_bytes = 0;  // after eviction, i.e. what the budget bounds
     int resident_tiles = 0;
   };
-
-  using NoWait = TileNoWait;
 
   TileCache(int width, int height, int tile_size, std::size_t budget_bytes, Reader reader);
   ~TileCache();
@@ -116,6 +102,9 @@ class TileCache {
 
   // Sample (i, j), 0 <= i < width, 0 <= j < height.
   T at(int i, int j) const;
+  // Sample (i, j) when its tile is resident (marked recently used); else
+  // queues the tile first for the background thread and returns nullopt.
+  std::optional<T> at_if_resident(int i, int j) const;
   // Samples [x, x + w) x [y, y + h) into dst, rows dst_stride elements apart.
   void read_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride) const;
   // The same without waiting: copies only if every tile of the rectangle is
@@ -144,6 +133,7 @@ class TileCache {
   int key(int tx, int ty) const { return ty * tiles_x_ + tx; }
   TilePtr load(int k) const;                     // reads tile k (no lock held)
   TilePtr get(int k) const;                      // resident or paged in now (a miss)
+  TilePtr get_if_resident(int k) const;          // null (and queued first) when not resident
   template <class Fetch>
   void copy_rect(int x, int y, int w, int h, T* dst, std::size_t dst_stride, Fetch&& fetch) const;
   void insert_locked(int k, TilePtr t) const;    // + eviction

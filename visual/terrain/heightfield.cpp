@@ -5,10 +5,32 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace ig::terrain {
 
-float Heightfield::paged_at(int i, int j) const { return paged->cache->at(i, j); }
+float Heightfield::paged_at(int i, int j) const {
+  if (!resident_misses) return paged->cache->at(i, j);
+  if (const auto v = paged->cache->at_if_resident(i, j)) return *v;
+  ++resident_misses->count;
+  const double step = paged->overview_step;
+  return paged->overview->at_clamped(int(std::lround(i / step)), int(std::lround(j / step)));
+}
+
+Heightfield Heightfield::resident_only(TileMisses& misses) const {
+  if (!paged) throw std::logic_error("Heightfield::resident_only: heights held whole");
+  Heightfield view;
+  view.width = width;
+  view.height = height;
+  view.spacing_x_m = spacing_x_m;
+  view.spacing_y_m = spacing_y_m;
+  view.paged = paged;
+  view.min_m = min_m;
+  view.max_m = max_m;
+  view.mean_m = mean_m;
+  view.resident_misses = &misses;
+  return view;
+}
 
 float Heightfield::at_clamped(int i, int j) const {
   i = std::clamp(i, 0, width - 1);

@@ -18,6 +18,7 @@
 namespace ig::terrain {
 
 struct PagedHeights;  // terrain/paged_heights.h
+struct TileMisses;    // terrain/height_tile_cache.h
 
 // Affine map from terrain-local grid indices to the DEM's own CRS, kept so
 // geodetic poses can be placed on the grid (GDAL geotransform convention,
@@ -35,7 +36,7 @@ struct Heightfield {
   double spacing_x_m = 1.0;
   double spacing_y_m = 1.0;
   std::vector<float> heights;  // width * height, row-major, row 0 = south; empty when paged
-  // Set for a DEM whose heights exceed the memory budget (issue 16): the
+  // Set for a DEM whose heights exceed the memory budget: the
   // samples are paged from the source by a tile cache, and the overview and
   // min/max pyramid were built at load (terrain/paged_heights.h). at() and
   // everything built on it read through it; code that reads `heights`
@@ -56,6 +57,9 @@ struct Heightfield {
   std::string source;  // file path, folder of tiles or generator description, for logs
   int source_tiles = 0;       // > 0: mosaicked from this many tiles (terrain/dem_mosaic.h)
   int reprojected_tiles = 0;  // of which reprojected to the first tile's CRS
+  // Set only in a resident-only view (resident_only()): paged reads that
+  // must not wait count here.
+  TileMisses* resident_misses = nullptr;
 
   float at(int i, int j) const { return paged ? paged_at(i, j) : heights[static_cast<std::size_t>(j) * width + i]; }
   // For writing a heightfield that is not paged.
@@ -77,6 +81,14 @@ struct Heightfield {
   double sample_surface(double x_m, double y_m) const;
 
   void finalize_stats();
+
+  // A paged heightfield read without waiting (a live frame): a sample whose
+  // tile is not resident queues the tile, counts in `misses` and reads the
+  // overview's height there instead, so the caller checks misses.count and
+  // drops what it computed. A copy sharing the tiles (nothing else: no
+  // georeference or source); `misses` must outlive it. Paged heightfields
+  // only (std::logic_error otherwise: whole heights never wait).
+  Heightfield resident_only(TileMisses& misses) const;
 
   // Georeferenced grids: the outer sample edges (half a sample beyond the
   // corner sample centres) in the DEM's CRS: west, south, east, north.

@@ -1,6 +1,6 @@
 #pragma once
-// What a paged Heightfield keeps resident (issue 16: terrain beyond a
-// memory budget; docs/terrain-data.md "Paged heights"): the tile cache the
+// What a paged Heightfield keeps resident (terrain beyond a memory
+// budget; docs/terrain-data.md "Paged heights"): the tile cache the
 // samples are read through, and what the loader built in its one pass over
 // the source: the overview (every overview_step-th sample, the scene's
 // height texture and Level0's grid) and the compact min/max pyramid (ray

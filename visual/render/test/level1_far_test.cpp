@@ -1,10 +1,9 @@
-// Level1 at its smallest when E is far out (render/twolevel_method.cpp,
-// place_level1): when even the largest Level1 square around E reaches no
-// terrain nearer than where Level0's largest error is under half a pixel,
-// a larger Level1 could not show anything, so it takes the smallest ladder
-// size, placed under the eye (a far E used to grow it to the largest, and a
-// low eye's guard too: 10^6 vertices for a few pixels on the issue-16
-// flights). A near view keeps the controller's size.
+// Level1 at its smallest when E is far out, drawn (the rule itself is
+// unit-tested without GL in lod/test/twolevel_selection_test.cpp): when even
+// the largest Level1 square around E reaches no terrain nearer than where
+// Level0's largest error is under half a pixel, a larger Level1 could not
+// show anything, so it takes the smallest ladder size, placed under the eye.
+// A near view keeps the controller's size.
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,15 @@
 // The tile cache of paged heights (terrain/height_tile_cache.h): the same
 // samples as the whole array, the budget respected, LRU eviction, the
-// background loader, misses counted, read errors reported. A synthetic
+// background loader, misses counted, read errors reported, the
+// resident-only reads of a live frame. A synthetic
 // reader stands in for GDAL; synchronisation by wait_idle(), never sleeps.
 #include "terrain/height_tile_cache.h"
+
+#include <memory>
+
+#include "terrain/height_pyramid.h"
+#include "terrain/heightfield_overview.h"
+#include "terrain/paged_heights.h"
 
 #include <gtest/gtest.h>
 
@@ -85,33 +92,68 @@ TEST(HeightTileCache, BackgroundThreadLoadsRequestedTilesSoReadsDoNotWait) {
   EXPECT_EQ(reads.load(), 12);
 }
 
-TEST(HeightTileCache, NoWaitScopeThrowsAndQueuesInsteadOfReading) {
+TEST(HeightTileCache, ResidentOnlyReadsQueueInsteadOfWaiting) {
   std::atomic<int> reads{0};
   HeightTileCache cache(128, 128, 16, 64 * kTileBytes, synthetic(&reads));
   EXPECT_FALSE(cache.resident_rect(40, 40, 1, 1));
-  {
-    HeightTileCache::NoWait no_wait;
-    EXPECT_THROW(cache.at(40, 40), TileNotResident);
-    std::vector<float> out(20 * 20);
-    {
-      HeightTileCache::NoWait nested;
-    }
-    EXPECT_THROW(cache.read_rect(30, 30, 20, 20, out.data(), 20), TileNotResident);  // still no wait after a nested scope
-  }
-  cache.wait_idle();  // the background thread read what the throws queued
+  EXPECT_FALSE(cache.at_if_resident(40, 40).has_value());  // queued, not read
+  EXPECT_FALSE(cache.at_if_resident(30, 49).has_value());
+  cache.wait_idle();  // the background thread read what was queued
   EXPECT_EQ(cache.stats().misses, 0);
   EXPECT_EQ(cache.stats().deferred, 2);
   EXPECT_TRUE(cache.resident(2, 2));
-  EXPECT_FALSE(cache.resident_rect(30, 30, 20, 20));  // only the first of its 4 tiles was queued
-  {
-    HeightTileCache::NoWait no_wait;
-    EXPECT_EQ(cache.at(40, 40), value(40, 40));  // resident: read, no throw
-  }
-  EXPECT_EQ(cache.at(30, 49), value(30, 49));  // outside the scope: waits (a miss)
+  EXPECT_TRUE(cache.resident(1, 3));
+  EXPECT_EQ(cache.at_if_resident(40, 40), value(40, 40));  // resident: read
+  EXPECT_EQ(cache.stats().deferred, 2);
+  EXPECT_EQ(cache.at(70, 70), value(70, 70));  // at() waits (a miss)
   EXPECT_EQ(cache.stats().misses, 1);
   cache.request(0, 0, 128, 128);
   cache.wait_idle();
   EXPECT_TRUE(cache.resident_rect(-5, -5, 200, 200));  // clipped to the grid
+}
+
+// The resident-only views a live frame reads through: a sample (or pyramid
+// node) over a tile that is not resident counts a miss in the caller's
+// TileMisses and reads a fallback (the overview's height; the level-2
+// node's bounds), and the tile comes in for the next frame.
+TEST(HeightTileCache, ResidentOnlyViewsCountMissesAndFallBack) {
+  constexpr int kSize = 129, kStep = 4;
+  auto cache = std::make_shared<HeightTileCache>(kSize, kSize, 16, 256 * kTileBytes, synthetic());
+  Heightfield whole;
+  whole.width = whole.height = kSize;
+  whole.heights.resize(std::size_t(kSize) * kSize);
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) whole.ref(i, j) = value(i, j);
+  whole.finalize_stats();
+  const HeightPyramid full(whole);
+  std::vector<HeightPyramid::MinMax> level2;
+  for (int j = 0; j < full.level_height(2); ++j)
+    for (int i = 0; i < full.level_width(2); ++i) level2.push_back(full.node(2, i, j));
+  auto paged = std::make_shared<PagedHeights>();
+  paged->cache = cache;
+  paged->overview_step = kStep;
+  paged->overview = std::make_shared<Heightfield>(decimate_heightfield(whole, kStep));
+  paged->pyramid = std::make_shared<const HeightPyramid>(
+      HeightPyramid::from_level2(kSize, kSize, cache, level2, full.root()));
+  Heightfield hf = whole;
+  hf.heights.clear();
+  hf.paged = paged;
+
+  TileMisses misses;
+  const Heightfield view = hf.resident_only(misses);
+  EXPECT_EQ(view.at(41, 42), paged->overview->at(10, 11));  // not resident: the overview's nearest sample
+  EXPECT_EQ(misses.count, 1);
+  const HeightPyramid pyramid_view = paged->pyramid->resident_only(misses);
+  const auto node = pyramid_view.node(0, 81, 82);
+  EXPECT_EQ(misses.count, 2);
+  EXPECT_EQ(node.lo, paged->pyramid->node(2, 20, 20).lo);  // the level-2 parent's bounds
+  EXPECT_EQ(node.hi, paged->pyramid->node(2, 20, 20).hi);
+  EXPECT_EQ(cache->stats().misses, 0) << "nothing waited";
+  cache->wait_idle();
+  EXPECT_EQ(view.at(41, 42), value(41, 42));  // in now: the real sample, no miss
+  EXPECT_EQ(pyramid_view.node(0, 81, 82).hi, full.node(0, 81, 82).hi);
+  EXPECT_EQ(misses.count, 2);
+  EXPECT_THROW(whole.resident_only(misses), std::logic_error);  // whole heights never wait
 }
 
 TEST(HeightTileCache, RequestsNeverQueueMoreThanTheBudgetHolds) {

@@ -1,0 +1,46 @@
+#include "gl/terrain_textures.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ig::gl {
+
+int max_texture_size() {
+  GLint size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+  return int(size);
+}
+
+Texture upload_height_texture(int width, int height, const float* heights) {
+  Texture t = create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, GL_R32F, width, height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(t.id(), 0, 0, 0, width, height, GL_RED, GL_FLOAT, heights);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+Texture upload_colour_texture(int width, int height, const unsigned char* pixels, bool rgba, bool repeat) {
+  Texture t = create_texture(GL_TEXTURE_2D);
+  const int levels = 1 + int(std::floor(std::log2(std::max(width, height))));
+  glTextureStorage2D(t.id(), levels, rgba ? GL_RGBA8 : GL_RGB8, width, height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(t.id(), 0, 0, 0, width, height, rgba ? GL_RGBA : GL_RGB, GL_UNSIGNED_BYTE, pixels);
+  glGenerateTextureMipmap(t.id());
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  const GLint wrap = repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, wrap);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, wrap);
+  return t;
+}
+
+void bind_texture(TextureUnit u, const Texture& texture) { glBindTextureUnit(GLuint(unit(u)), texture.id()); }
+void bind_texture(TextureUnit u, GLuint texture) { glBindTextureUnit(GLuint(unit(u)), texture); }
+
+void finish() { glFinish(); }
+
+}  // namespace ig::gl

@@ -1,0 +1,23 @@
+#pragma once
+// The scene's textures: heights (R32F, one float per sample, linear,
+// clamped), 8-bit colour with its mip chain (imagery, ground detail), and
+// binding a texture to its unit of the one table (gl/texture_units.h).
+
+#include "gl/gl_objects.h"
+#include "gl/texture_units.h"
+
+namespace ig::gl {
+
+// The largest texture side the context allows.
+int max_texture_size();
+// width x height float heights, row-major.
+Texture upload_height_texture(int width, int height, const float* heights);
+// 8-bit colour (rgba: 4 channels, else 3), tightly packed, mipmapped
+// (trilinear); repeat: wraps (a tiling texture), else clamps to the edge.
+Texture upload_colour_texture(int width, int height, const unsigned char* pixels, bool rgba, bool repeat);
+void bind_texture(TextureUnit unit, const Texture& texture);
+void bind_texture(TextureUnit unit, GLuint texture);
+// Waits for every GL command issued so far (timing an upload, not its enqueue).
+void finish();
+
+}  // namespace ig::gl
