@@ -41,6 +41,5 @@ Texture upload_colour_texture(int width, int height, const unsigned char* pixels
 void bind_texture(TextureUnit u, const Texture& texture) { glBindTextureUnit(GLuint(unit(u)), texture.id()); }
 void bind_texture(TextureUnit u, GLuint texture) { glBindTextureUnit(GLuint(unit(u)), texture); }
 
-void finish() { glFinish(); }
 
 }  // namespace ig::gl

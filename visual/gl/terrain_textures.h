@@ -17,7 +17,5 @@ Texture upload_height_texture(int width, int height, const float* heights);
 Texture upload_colour_texture(int width, int height, const unsigned char* pixels, bool rgba, bool repeat);
 void bind_texture(TextureUnit unit, const Texture& texture);
 void bind_texture(TextureUnit unit, GLuint texture);
-// Waits for every GL command issued so far (timing an upload, not its enqueue).
-void finish();
 
 }  // namespace ig::gl

@@ -8,6 +8,7 @@
 
 #include "gl/coverage_codes.h"
 #include "gl/gl_context.h"
+#include "gl/frame_state.h"
 #include "gl/terrain_textures.h"
 #include "terrain/detail_noise.h"
 #include "terrain/heightfield_overview.h"
