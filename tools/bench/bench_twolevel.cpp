@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -142,7 +143,15 @@ int main(int argc, char** argv) {
     {
       o.method = "twolevel";
       ig::session::ScenarioRunner runner(s, o);
-      auto* tl = dynamic_cast<ig::render::TwoLevelMethod*>(&runner.method());
+      // The benchmark reads the two-level method's own state (Level0, the
+      // Level1 square), so it builds the method itself with the runner's settings.
+      auto& channel = runner.channels().front();
+      channel.method.reset();  // its window set goes back to the scene first
+      auto own = std::make_unique<ig::render::TwoLevelMethod>(runner.scene(), runner.shader_dir(),
+                                                              runner.scenario().render.twolevel);
+      ig::render::TwoLevelMethod* tl = own.get();
+      channel.renderer->set_method(*own);
+      channel.method = std::move(own);
       std::printf("renderer: %s | %s\n", runner.context().gl_renderer().c_str(), runner.context().gl_version().c_str());
       std::printf("dem: %s (%dx%d), Level0: %d triangles built in %.0f ms, max error %.0f m\n",
                   runner.heightfield().source.c_str(), runner.heightfield().width, runner.heightfield().height,
