@@ -3,14 +3,11 @@
 #  * included by tests/CMakeLists.txt: registers cli.tiles.* (skip without IG_DEM_DIR);
 #  * run as `cmake -P dem_tiles.cmake -DIG=... -DCUT=... -DOUT=... -DCASE=...`.
 
+include(${CMAKE_CURRENT_LIST_DIR}/lib/dem_script.cmake)
+
 if(CMAKE_SCRIPT_MODE_FILE)
-  if("$ENV{IG_DEM_DIR}" STREQUAL "")
-    message("IG_DEM_DIR not set: tiled-DEM test skipped")
-    cmake_language(EXIT 77)
-  endif()
+  begin_dem_script(tiled-DEM)
   set(DEM "$ENV{IG_DEM_DIR}/sierra_nevada_3arcsec_4097.tif")
-  file(REMOVE_RECURSE "${OUT}")
-  file(MAKE_DIRECTORY "${OUT}")
 
   function(run_ok)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -111,9 +108,5 @@ if(CMAKE_SCRIPT_MODE_FILE)
   return()
 endif()
 
-foreach(case four missing reprojected bad)
-  add_test(NAME cli.tiles.${case}
-    COMMAND ${CMAKE_COMMAND} -DIG=$<TARGET_FILE:ig> -DCUT=$<TARGET_FILE:cut_dem_tiles>
-      -DOUT=${CMAKE_BINARY_DIR}/test-out/tiles_${case} -DCASE=${case} -P ${CMAKE_CURRENT_LIST_FILE})
-  set_tests_properties(cli.tiles.${case} PROPERTIES LABELS cli SKIP_RETURN_CODE 77)
-endforeach()
+add_dem_script_tests(cli.tiles tiles ${CMAKE_CURRENT_LIST_FILE} "-DCUT=$<TARGET_FILE:cut_dem_tiles>"
+  four missing reprojected bad)

@@ -19,14 +19,11 @@
 #  * included by tests/CMakeLists.txt: registers cli.height_window.* (skip without IG_DEM_DIR);
 #  * run as `cmake -P height_window.cmake -DIG=... -DOUT=... -DCASE=...`.
 
+include(${CMAKE_CURRENT_LIST_DIR}/lib/dem_script.cmake)
+
 if(CMAKE_SCRIPT_MODE_FILE)
-  if("$ENV{IG_DEM_DIR}" STREQUAL "")
-    message("IG_DEM_DIR not set: height-window test skipped")
-    cmake_language(EXIT 77)
-  endif()
+  begin_dem_script(height-window)
   set(DEM "$ENV{IG_DEM_DIR}/sierra_nevada_3arcsec_4097.tif")
-  file(REMOVE_RECURSE "${OUT}")
-  file(MAKE_DIRECTORY "${OUT}")
   include(${CMAKE_CURRENT_LIST_DIR}/lib/window_runs.cmake)
   set(keys "{\"t\": 0, \"position\": [36.700, -118.060, 200], \"hpr\": [250, -4, 0]},
     {\"t\": 2, \"position\": [36.680, -118.110, 150], \"hpr\": [255, -2, -8]}")
@@ -76,11 +73,8 @@ if(CMAKE_SCRIPT_MODE_FILE)
     if(header MATCHES "page_waits")
       message(FATAL_ERROR "frames.csv of a DEM within the budget has paging columns")
     endif()
-    file(SHA256 "${OUT}/run_2048/final.png" a)
-    file(SHA256 "${OUT}/run_16/final.png" b)
-    if(NOT a STREQUAL b)
-      message(FATAL_ERROR "final.png with paged heights differs from the whole-array run's")
-    endif()
+    expect_same_file("${OUT}/run_2048/final.png" "${OUT}/run_16/final.png"
+      "final.png with paged heights differs from the whole-array run's")
     return()
   endif()
   foreach(window 0 256)
@@ -96,17 +90,10 @@ if(CMAKE_SCRIPT_MODE_FILE)
   if(extra LESS 262144)
     message(FATAL_ERROR "the height window uploaded ${extra} bytes, less than its first fill (262144)")
   endif()
-  file(SHA256 "${OUT}/run_0/final.png" a)
-  file(SHA256 "${OUT}/run_256/final.png" b)
-  if(NOT a STREQUAL b)
-    message(FATAL_ERROR "final.png with a 256-sample height window differs from the whole-DEM texture's")
-  endif()
+  expect_same_file("${OUT}/run_0/final.png" "${OUT}/run_256/final.png"
+    "final.png with a 256-sample height window differs from the whole-DEM texture's")
   return()
 endif()
 
-foreach(case same_picture overview paged paged_overview)
-  add_test(NAME cli.height_window.${case}
-    COMMAND ${CMAKE_COMMAND} -DIG=$<TARGET_FILE:ig> -DOUT=${CMAKE_BINARY_DIR}/test-out/height_window_${case}
-      -DCASE=${case} -P ${CMAKE_CURRENT_LIST_FILE})
-  set_tests_properties(cli.height_window.${case} PROPERTIES LABELS cli SKIP_RETURN_CODE 77)
-endforeach()
+add_dem_script_tests(cli.height_window height_window ${CMAKE_CURRENT_LIST_FILE} ""
+  same_picture overview paged paged_overview)

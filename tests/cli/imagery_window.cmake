@@ -30,14 +30,11 @@
 #  * bad: imagery 20 degrees east of the DEM is refused with the clear error.
 # Two roles, like height_window.cmake.
 
+include(${CMAKE_CURRENT_LIST_DIR}/lib/dem_script.cmake)
+
 if(CMAKE_SCRIPT_MODE_FILE)
-  if("$ENV{IG_DEM_DIR}" STREQUAL "")
-    message("IG_DEM_DIR not set: imagery-window test skipped")
-    cmake_language(EXIT 77)
-  endif()
+  begin_dem_script(imagery-window)
   set(DEM "$ENV{IG_DEM_DIR}/mt_fuji_90m.tif")
-  file(REMOVE_RECURSE "${OUT}")
-  file(MAKE_DIRECTORY "${OUT}")
   set(offset 0)
   if(CASE STREQUAL "bad")
     set(offset 20)
@@ -147,9 +144,5 @@ if(CMAKE_SCRIPT_MODE_FILE)
   return()
 endif()
 
-foreach(case top_down top_down_overview top_down_paged flight flight_paged bad)
-  add_test(NAME cli.imagery_window.${case}
-    COMMAND ${CMAKE_COMMAND} -DIG=$<TARGET_FILE:ig> -DTOOL=$<TARGET_FILE:imagery_tool>
-      -DOUT=${CMAKE_BINARY_DIR}/test-out/imagery_window_${case} -DCASE=${case} -P ${CMAKE_CURRENT_LIST_FILE})
-  set_tests_properties(cli.imagery_window.${case} PROPERTIES LABELS cli SKIP_RETURN_CODE 77)
-endforeach()
+add_dem_script_tests(cli.imagery_window imagery_window ${CMAKE_CURRENT_LIST_FILE} "-DTOOL=$<TARGET_FILE:imagery_tool>"
+  top_down top_down_overview top_down_paged flight flight_paged bad)

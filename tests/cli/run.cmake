@@ -28,11 +28,9 @@ ig_cli_failure_test(cli.run.unknown_method "unknown method 'nope'.*exit=[1-9]"
   "'$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --method nope --frames 1 --out '${IG_TEST_OUT}/run_nope'")
 
 # The Sierra Nevada flight on the real 4097^2 DEM (skips without IG_DEM_DIR).
-add_test(NAME cli.run.sierra_real_dem
-  COMMAND bash -c "if [ -z \"$IG_DEM_DIR\" ]; then echo 'IG_DEM_DIR not set: real-DEM run skipped'; exit 77; fi
-    set -e; rm -rf '${IG_TEST_OUT}/run_sierra'
+ig_real_dem_test(cli.run.sierra_real_dem "real-DEM run"
+  "set -e; rm -rf '${IG_TEST_OUT}/run_sierra'
     '$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/sierra_owens_valley.json' --frames 2 --size 320x240 --out '${IG_TEST_OUT}/run_sierra' --quiet
     grep -q '\"width\": 4097' '${IG_TEST_OUT}/run_sierra/summary.json'
     test -s '${IG_TEST_OUT}/run_sierra/final.png'
     echo sierra ok")
-set_tests_properties(cli.run.sierra_real_dem PROPERTIES LABELS cli SKIP_RETURN_CODE 77)

@@ -10,16 +10,8 @@ set -euo pipefail
 bin=$1 src=$2 out=$3 protocol=$4 step=$5 frames=$6
 shift 6
 check_args=() send_args=()
-mode=""
-for a in "$@"; do
-  case "$a" in
-    --check|--send) mode=$a ;;
-    *) case "$mode" in
-         --check) check_args+=("$a") ;;
-         --send) send_args+=("$a") ;;
-       esac ;;
-  esac
-done
+source "$(dirname "$0")/split_args.sh"
+split_args "check send" "$@"
 rm -rf "$out" && mkdir -p "$out"
 # The default scenario with frames STEP_S apart (a live IG renders far more often than its 20 Hz).
 python3 -c "

@@ -7,17 +7,8 @@ set -euo pipefail
 bin=$1 src=$2 out=$3 protocol=$4 port=$5
 shift 5
 check_args=() send_args=() serve_args=()
-mode=""
-for a in "$@"; do
-  case "$a" in
-    --check|--send|--serve) mode=$a ;;
-    *) case "$mode" in
-         --check) check_args+=("$a") ;;
-         --send) send_args+=("$a") ;;
-         --serve) serve_args+=("$a") ;;
-       esac ;;
-  esac
-done
+source "$(dirname "$0")/split_args.sh"
+split_args "check send serve" "$@"
 rm -rf "$out" && mkdir -p "$out"
 case "$protocol" in
   native) flag=--udp ;;

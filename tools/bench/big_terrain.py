@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 16's big-terrain benchmark: `ig run` on DEMs beyond one GL texture,
+"""Big-terrain benchmark: `ig run` on DEMs beyond one GL texture,
 made at bench time under /tmp and deleted after (nothing large is kept).
 
 usage: IG_DEM_DIR=... tools/bench/big_terrain.py BUILD_DIR OUT.md [--duration S] [--size WxH]
@@ -10,7 +10,7 @@ Sierra copies overlapping by one sample (20481², beyond the 16384 texture
 limit: overview + height window), flying across the corner where four
 copies meet (lat 36.0, lon -117.0: tile boundaries in both directions).
 With --cases including sierra_8x8_32769: 8 x 8 copies (32769², the size
-of the issue's synthetic 32769² case, made the same cheap way; its float
+of the synthetic 32769² case below, made the cheap way; its float
 heights alone are 4.3 GB, so they are paged from the VRT by the tile
 cache within terrain.memory_budget_mb, docs/terrain-data.md). With
 synthetic_tiles_32769: the synthetic fractal refined to 32769^2 at 15 m and
@@ -25,7 +25,7 @@ uploads (MB per second of flight, largest per frame), tiles paged in by the
 background thread per second of wall time, and frames that waited on I/O
 (paged: frames with a synchronous page-in, summary.json "paging").
 
-Imagery (issue 16 deliverable 3): with --cases including sierra_4097_ortho,
+Imagery: with --cases including sierra_4097_ortho,
 an RGB GeoTIFF --imagery-scale (default 6) times finer than the Sierra DEM
 (24582^2 at 6: 1.8 GB of RGB; tiled, DEFLATE; red the height, green/blue a
 pixel-level pattern) is made at bench time by imagery_tool (BUILD/bin) and

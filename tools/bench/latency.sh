@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark: transport delay per latency mode (issue 12). For each mode
+# Benchmark: transport delay per latency mode. For each mode
 # (smooth, latest, sync), host rate (30, 60 Hz) and stream (clean; 20 ms
 # jitter + 5 % loss), ig serve renders a CIGI stream from ig send on
 # loopback; tools/bench/latency_table.py then prints, per run, the transport

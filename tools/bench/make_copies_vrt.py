@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes a GDAL VRT that tiles one DEM n x n times, neighbours overlapping by
-one sample (issue 16's big case: 5 x 5 Sierra copies = 20481 x 20481),
+one sample (big_terrain.py's big case: 5 x 5 Sierra copies = 20481 x 20481),
 without copying any data: every copy is a SimpleSource of the same file.
 
 usage: make_copies_vrt.py IG SOURCE.tif N OUT.vrt

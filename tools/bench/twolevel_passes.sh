@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cost breakdown of the two-level method's passes (issue 13): the Table 2
+# Cost breakdown of the two-level method's passes: times the Table 2
 # flight with every pass, then without each one in turn (ig bench
 # --skip-pass), side by side in one run; prints median frame ms, CPU ms and the work
 # counters per variant. Images without a pass are wrong on purpose: only

@@ -143,9 +143,7 @@ Args parse_args(const std::vector<std::string>& a) {
                  "count); repeatable. The images are then wrong on purpose")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->expected(1)->allow_extra_args(false)
       ->option_text("NAME");
-  app.add_option("--shader-dir", args.shader_dir,
-                 "where the GLSL shaders are (default: shaders/ beside the binary, or $IG_SHADER_DIR)")
-      ->option_text("DIR");
+  add_shader_dir_option(app, args.shader_dir);
   app.add_option("--out", args.out_dir, "output folder (default out/<scenario>_bench)")->option_text("DIR");
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");

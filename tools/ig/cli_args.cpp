@@ -179,6 +179,12 @@ CLI::Option* add_view_options(CLI::App& app, session::RunOptions& run) {
       ->excludes(headless);
 }
 
+CLI::Option* add_shader_dir_option(CLI::App& app, std::string& dir) {
+  return app.add_option("--shader-dir", dir,
+                        "where the GLSL shaders are (default: shaders/ beside the binary, or $IG_SHADER_DIR)")
+      ->option_text("DIR");
+}
+
 CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::optional<int>& width,
                              std::optional<int>& height) {
   return app.add_option_function<std::string>(name, [name, &width, &height](const std::string& v) {

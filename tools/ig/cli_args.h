@@ -91,6 +91,9 @@ CLI::Validator one_of(std::vector<std::string> choices);
 // own window options to exclude or imply; parse_view_options reads it).
 CLI::Option* add_view_options(CLI::App& app, session::RunOptions& run);
 
+// --shader-dir DIR, the GLSL shaders' folder (ig run and ig bench).
+CLI::Option* add_shader_dir_option(CLI::App& app, std::string& dir);
+
 // "WxH" into width / height (each a positive integer).
 CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::optional<int>& width,
                              std::optional<int>& height);

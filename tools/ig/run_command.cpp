@@ -62,9 +62,7 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_option("--vsync", vsync, "windowed: wait for the display's refresh, on or off (default: render.vsync, on)")
       ->check(one_of({"on", "off"}))
       ->option_text("on|off");
-  app.add_option("--shader-dir", args.run.shader_dir,
-                 "where the GLSL shaders are (default: shaders/ beside the binary, or $IG_SHADER_DIR)")
-      ->option_text("DIR");
+  add_shader_dir_option(app, args.run.shader_dir);
   app.add_flag("--quiet", args.quiet, "no progress line on the terminal (warnings and the summary lines remain)");
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");

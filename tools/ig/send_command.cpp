@@ -83,28 +83,21 @@ Args parse_args(const std::vector<std::string>& a) {
       ->check(positive_number())
       ->option_text("S");
   app.add_flag("--geodetic", args.geodetic, "native: send latitude, longitude and altitude instead of local metres");
-  app.add_option("--loss", args.loss, "probability that a packet is dropped (default 0)")
-      ->check(probability())
-      ->option_text("P");
-  app.add_option("--burst-loss", args.burst_loss,
-                 "probability that a burst of --burst-length packets is dropped (default 0)")
-      ->check(probability())
-      ->option_text("P");
+  // The impairments drawn per packet, each with its probability (default 0).
+  const auto add_probability = [&app](const std::string& name, double& p, const std::string& event) {
+    app.add_option(name, p, "probability that " + event + " (default 0)")->check(probability())->option_text("P");
+  };
+  add_probability("--loss", args.loss, "a packet is dropped");
+  add_probability("--burst-loss", args.burst_loss, "a burst of --burst-length packets is dropped");
   app.add_option("--burst-length", args.burst_length, "packets a loss burst drops (default 10)")
       ->check(positive_int())
       ->option_text("N");
   app.add_option("--jitter-ms", args.jitter_ms, "each send time delayed by up to J ms, uniformly (default 0)")
       ->check(positive_number())
       ->option_text("J");
-  app.add_option("--reorder", args.reorder, "probability that a packet is overtaken by the next (default 0)")
-      ->check(probability())
-      ->option_text("P");
-  app.add_option("--duplicate", args.duplicate, "probability that a packet is sent twice (default 0)")
-      ->check(probability())
-      ->option_text("P");
-  app.add_option("--corrupt", args.corrupt, "probability that a packet has a byte changed (default 0)")
-      ->check(probability())
-      ->option_text("P");
+  add_probability("--reorder", args.reorder, "a packet is overtaken by the next");
+  add_probability("--duplicate", args.duplicate, "a packet is sent twice");
+  add_probability("--corrupt", args.corrupt, "a packet has a byte changed");
   app.add_option("--seed", args.seed, "seed of the impairments' random draws (default 1)")
       ->check(positive_int())
       ->option_text("N");
