@@ -25,6 +25,15 @@ void store_six(std::uint8_t* p, Order o, std::array<const std::optional<float>*,
   }
 }
 
+// Both view packets open alike: [0] opcode, [1] size, [2] view, [4] group.
+void store_view_head(std::uint8_t* p, std::uint8_t op, std::size_t size, std::uint16_t view, std::uint8_t group,
+                     Order o) {
+  p[0] = op;
+  p[1] = std::uint8_t(size);
+  bytes::store_u16(p + 2, view, o);
+  p[4] = group;
+}
+
 bool finite(const std::optional<float>& v) { return !v || std::isfinite(*v); }
 bool within(const std::optional<float>& v, float limit) { return !v || std::abs(*v) <= limit; }
 
@@ -101,10 +110,7 @@ CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
 std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const CigiViewControl& v, bool swap) {
   const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiViewControlSize> b{};
-  b[0] = kCigiOpViewControl;
-  b[1] = std::uint8_t(b.size());
-  bytes::store_u16(b.data() + 2, v.view, o);
-  b[4] = v.group;
+  store_view_head(b.data(), kCigiOpViewControl, b.size(), v.view, v.group, o);
   bytes::store_u16(b.data() + 6, v.entity, o);
   store_six(b.data(), o, {&v.x_m, &v.y_m, &v.z_m, &v.roll_deg, &v.pitch_deg, &v.yaw_deg}, b[5]);
   return b;
@@ -113,10 +119,7 @@ std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const Ci
 std::array<std::uint8_t, kCigiViewDefinitionSize> encode_cigi_view_definition(const CigiViewDefinition& v, bool swap) {
   const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiViewDefinitionSize> b{};
-  b[0] = kCigiOpViewDefinition;
-  b[1] = std::uint8_t(b.size());
-  bytes::store_u16(b.data() + 2, v.view, o);
-  b[4] = v.group;
+  store_view_head(b.data(), kCigiOpViewDefinition, b.size(), v.view, v.group, o);
   std::uint8_t enabled = 0;
   store_six(b.data(), o, {&v.near_m, &v.far_m, &v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg}, enabled);
   b[5] = std::uint8_t(enabled | (v.mirror << 6));
