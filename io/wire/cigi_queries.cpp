@@ -162,28 +162,17 @@ const char* query_reject_name(QueryReject r) {
 
 CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const CigiRequestLimits& limits) {
   CigiRequests out;
-  const std::size_t n = data.size();
-  const std::uint8_t* p = data.data();
   // The datagram's framing, as decode_cigi_host_datagram checks it.
   const std::optional<Order> order = cigi_host_datagram_order(data);
   if (!order) return out;
   const Order o = *order;
   out.byte_swapped = o != bytes::kHostOrder;
-  out.host_frame = bytes::load_u32(p + 8, o);
-  for (std::size_t off = kCigiIgControlSize; off < n;) {
-    const std::size_t left = n - off;
-    const std::size_t size = left >= 2 ? p[off + 1] : 0;
-    if (size == 0 || size > left) {
-      // The rest cannot be framed; a request opcode there is a truncated request.
-      if (request_size(p[off])) out.rejects.push_back(QueryReject::Truncated);
-      break;
-    }
-    const std::uint8_t op = p[off];
+  out.host_frame = bytes::load_u32(data.data() + 8, o);
+  auto on_packet = [&](std::uint8_t op, const std::uint8_t* q, std::size_t size) {
     const std::size_t want = request_size(op);
     if (want && size != want) {
       out.rejects.push_back(QueryReject::WrongSize);
     } else if (want) {
-      const std::uint8_t* q = p + off;
       auto take = [&](auto decoded) {
         if (const auto* bad = std::get_if<QueryReject>(&decoded)) {
           out.rejects.push_back(*bad);
@@ -199,8 +188,11 @@ CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const Cigi
       else if (op == kCigiOpLosSegmentRequest) take(decode_los_segment(q, o));
       else take(decode_los_vector(q, o));
     }
-    off += size;
-  }
+  };
+  // A request opcode where the rest cannot be framed is a truncated request.
+  for_each_cigi_host_packet(data, on_packet, [&](std::uint8_t op) {
+    if (request_size(op)) out.rejects.push_back(QueryReject::Truncated);
+  });
   return out;
 }
 

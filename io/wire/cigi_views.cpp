@@ -63,27 +63,16 @@ std::optional<QueryReject> check(const CigiViewDefinition& v) {
 
 CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
   CigiViewPackets out;
-  const std::size_t n = data.size();
-  const std::uint8_t* p = data.data();
   // The datagram's framing, as decode_cigi_host_datagram checks it.
   const std::optional<Order> order = cigi_host_datagram_order(data);
   if (!order) return out;
   const Order o = *order;
-  for (std::size_t off = kCigiIgControlSize; off < n;) {
-    const std::size_t left = n - off;
-    const std::uint8_t op = p[off];
-    const bool view_packet = op == kCigiOpViewControl || op == kCigiOpViewDefinition;
-    const std::size_t size = left >= 2 ? p[off + 1] : 0;
-    if (size == 0 || size > left) {
-      if (view_packet) out.rejects.push_back(QueryReject::Truncated);
-      break;
-    }
-    const std::uint8_t* q = p + off;
-    off += size;
-    if (!view_packet) continue;
+  auto view_packet = [](std::uint8_t op) { return op == kCigiOpViewControl || op == kCigiOpViewDefinition; };
+  auto on_packet = [&](std::uint8_t op, const std::uint8_t* q, std::size_t size) {
+    if (!view_packet(op)) return;
     if (size != 32) {
       out.rejects.push_back(QueryReject::WrongSize);
-      continue;
+      return;
     }
     if (op == kCigiOpViewControl) {
       CigiViewControl v;
@@ -103,7 +92,10 @@ CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
       if (const auto bad = check(v)) out.rejects.push_back(*bad);
       else out.definitions.push_back(v);
     }
-  }
+  };
+  for_each_cigi_host_packet(data, on_packet, [&](std::uint8_t op) {
+    if (view_packet(op)) out.rejects.push_back(QueryReject::Truncated);
+  });
   return out;
 }
 
