@@ -8,11 +8,6 @@
 
 namespace ig::io::wire {
 
-static_assert(kCanFdFlagGeodetic == kPoseFlagGeodetic && kCanFdFlagRates == kPoseFlagRates &&
-                  kCanFdFlagVelocity == kPoseFlagVelocity && kCanFdFlagSequence == kPoseFlagSequence &&
-                  kCanFdFlagSenderTime == kPoseFlagSenderTime,
-              "the content flags are the ones pose_message reads and writes");
-
 namespace off = can_fd_offset;
 using bytes::Order;
 

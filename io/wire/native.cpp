@@ -7,11 +7,6 @@
 
 namespace ig::io::wire {
 
-static_assert(kNativeFlagGeodetic == kPoseFlagGeodetic && kNativeFlagRates == kPoseFlagRates &&
-                  kNativeFlagVelocity == kPoseFlagVelocity && kNativeFlagSequence == kPoseFlagSequence &&
-                  kNativeFlagSenderTime == kPoseFlagSenderTime,
-              "the content flags are the ones pose_message reads and writes");
-
 namespace off = native_offset;
 using bytes::Order;
 

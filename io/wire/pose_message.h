@@ -95,9 +95,9 @@ DecodeResult rejected(Reject why);
 std::optional<Reject> fixed_size_reject(std::size_t size, std::size_t expected);
 DecodeResult finish_decode(PoseMessage pose, DecodeResult r = {});
 
-// The content flags the native and CAN FD pose formats share (each format
-// checks that its own bits are these): which frame, and which optional fields
-// the datagram carries. Unknown bits are ignored on decode.
+// The content flags the native and CAN FD pose formats share (each names
+// them its own way): which frame, and which optional fields the datagram
+// carries. Unknown bits are ignored on decode.
 inline constexpr std::uint16_t kPoseFlagGeodetic = 1u << 0;
 inline constexpr std::uint16_t kPoseFlagRates = 1u << 1;
 inline constexpr std::uint16_t kPoseFlagVelocity = 1u << 2;
