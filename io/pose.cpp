@@ -5,6 +5,8 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "io/wire/pose_message.h"
+
 namespace ig::io {
 namespace {
 
@@ -25,20 +27,6 @@ glm::dquat axis_rotation(double angle_rad, int axis) {
   if (axis == 1) q.y = s;
   if (axis == 2) q.z = s;
   return q;
-}
-
-double wrap_heading(double deg) {
-  double h = std::fmod(deg, 360.0);
-  if (h < 0.0) h += 360.0;
-  if (h >= 360.0) h = 0.0;  // -1e-17 + 360 rounds to 360
-  return h;
-}
-
-double wrap_roll(double deg) {
-  double r = std::fmod(deg, 360.0);  // (-360, 360)
-  if (r > 180.0) r -= 360.0;
-  if (r <= -180.0) r += 360.0;
-  return r;
 }
 
 }  // namespace
@@ -78,8 +66,8 @@ Hpr hpr_from_attitude(const glm::dquat& q_in) {
     out.heading_deg = std::atan2(-at(1, 0), at(0, 0)) * kRadToDeg;
     out.roll_deg = 0.0;
   }
-  out.heading_deg = wrap_heading(out.heading_deg);
-  out.roll_deg = wrap_roll(out.roll_deg);
+  out.heading_deg = wire::wrap_360(out.heading_deg);
+  out.roll_deg = wire::wrap_180(out.roll_deg);
   return out;
 }
 

@@ -41,6 +41,16 @@ BodyAxes body_axes(const io::Pose& p) {
   return {io::forward_of(p.attitude), io::right_of(p.attitude), -io::up_of(p.attitude)};
 }
 
+// A LOS answer starts as an invalid one that names its request and frame.
+template <class LosRequest>
+LosResponse los_response_for(const LosRequest& r, std::uint32_t host_frame) {
+  LosResponse out;
+  out.id = r.id;
+  out.extended = r.extended;
+  out.host_frame = host_frame;
+  return out;
+}
+
 }  // namespace
 
 HostServices::HostServices(const terrain::Heightfield& hf, double earth_radius_m, io::GeodeticToLocal to_local,
@@ -277,10 +287,7 @@ void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHi
 }
 
 LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& ownship) {
-  LosResponse out;
-  out.id = r.id;
-  out.extended = r.extended;
-  out.host_frame = host_frame_;
+  LosResponse out = los_response_for(r, host_frame_);
   const auto from = place(r.source, r.source_coords, r.entity, ownship);
   const auto to = place(r.destination, r.destination_coords,
                         r.destination_entity_valid ? r.destination_entity : r.entity, ownship);
@@ -291,10 +298,7 @@ LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose
 }
 
 LosResponse HostServices::los_vector(const LosVectorRequest& r, const io::Pose& ownship) {
-  LosResponse out;
-  out.id = r.id;
-  out.extended = r.extended;
-  out.host_frame = host_frame_;
+  LosResponse out = los_response_for(r, host_frame_);
   const auto from = place(r.source, r.source_coords, r.entity, ownship);
   if (!from || !query_.inside(from->x, from->y)) return out;
   const double az = r.azimuth_deg / kDeg, el = r.elevation_deg / kDeg;

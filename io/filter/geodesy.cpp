@@ -8,20 +8,16 @@
 #include <GeographicLib/Geocentric.hpp>
 #include <glm/geometric.hpp>
 
+#include "io/wire/pose_message.h"
+
 namespace ig::io::geo {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-double wrap_lon(double lon_deg) {
-  // Already in (-180, 180] (nearly always): fmod would give it back
-  // unchanged; skipped, as every geodetic HAT/HOT and LOS point comes here.
-  if (lon_deg > -180.0 && lon_deg <= 180.0) return lon_deg;
-  double l = std::fmod(lon_deg, 360.0);  // (-360, 360)
-  if (l > 180.0) l -= 360.0;
-  if (l <= -180.0) l += 360.0;
-  return l;
-}
+// Longitude to (-180, 180]; an in-range one (nearly always: every geodetic
+// HAT/HOT and LOS point comes here) is returned as it is.
+double wrap_lon(double lon_deg) { return wire::wrap_180(lon_deg); }
 
 }  // namespace
 

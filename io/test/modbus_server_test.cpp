@@ -89,6 +89,17 @@ int raw_connect(int port) {
   return fd;
 }
 
+// Waits up to 2 s for the server's next bytes on fd, then closes fd; returns
+// what recv returned (0: the server closed the connection).
+ssize_t recv_then_close(int fd) {
+  char buf[300];
+  timeval tv{2, 0};
+  setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  const ssize_t got = recv(fd, buf, sizeof buf, 0);
+  close(fd);
+  return got;
+}
+
 TEST(ModbusRegisterMap, BlocksAreContiguousWithoutOverlap) {
   for (Block b : {Block::Input, Block::Holding}) {
     std::vector<int> owner(block_size(b), -1);
@@ -342,11 +353,7 @@ TEST(ModbusServer, HalfARequestNeitherStallsNorCrashes) {
   close(vanish);
   good.input(0, 4);
   // The silent one is dropped after the request timeout (0.3 s here).
-  char buf[16];
-  timeval tv{2, 0};
-  setsockopt(silent, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-  EXPECT_EQ(recv(silent, buf, sizeof buf, 0), 0) << "server should close it";
-  close(silent);
+  EXPECT_EQ(recv_then_close(silent), 0) << "server should close it";
   good.input(0, in::kCount);
   EXPECT_GE(server->counters().clients_dropped, 1u);
 }
@@ -361,11 +368,7 @@ TEST(ModbusServer, GarbageBytesCloseOnlyThatClient) {
     for (auto& b : junk) b = std::uint8_t(rng());
     junk[2] = 0x47;  // protocol id != 0
     (void)send(fd, junk.data(), junk.size(), MSG_NOSIGNAL);
-    char buf[300];
-    timeval tv{2, 0};
-    setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-    EXPECT_LE(recv(fd, buf, sizeof buf, 0), 0) << "garbage client closed";
-    close(fd);
+    EXPECT_LE(recv_then_close(fd), 0) << "garbage client closed";
     good.input(0, 2);
   }
   // A wrong-length MBAP (length 0) and an over-long one are garbage too.
@@ -373,11 +376,7 @@ TEST(ModbusServer, GarbageBytesCloseOnlyThatClient) {
     const int fd = raw_connect(server->port());
     const std::uint8_t bad[] = {0, 1, 0, 0, std::uint8_t(len >> 8), std::uint8_t(len), 1, 4, 0, 0, 0, 1};
     (void)send(fd, bad, sizeof bad, MSG_NOSIGNAL);
-    char buf[32];
-    timeval tv{2, 0};
-    setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-    EXPECT_LE(recv(fd, buf, sizeof buf, 0), 0);
-    close(fd);
+    EXPECT_LE(recv_then_close(fd), 0);
   }
   good.input(0, in::kCount);
   EXPECT_GE(server->counters().clients_dropped, 7u);

@@ -38,13 +38,7 @@ CanFrame encode_can_fd_pose(const PoseMessage& pose) {
   p[off::kMagic] = kCanFdPoseMagic0;
   p[off::kMagic + 1] = kCanFdPoseMagic1;
   p[off::kVersion] = kCanFdPoseVersion;
-  std::uint8_t flags = 0;
-  if (pose.frame == PoseMessage::Frame::Geodetic) flags |= kCanFdFlagGeodetic;
-  if (pose.has_rates) flags |= kCanFdFlagRates;
-  if (pose.has_velocity) flags |= kCanFdFlagVelocity;
-  if (pose.has_sequence) flags |= kCanFdFlagSequence;
-  if (pose.has_sender_time) flags |= kCanFdFlagSenderTime;
-  p[off::kFlags] = flags;
+  p[off::kFlags] = static_cast<std::uint8_t>(pose_content_flags(pose));
   bytes::store_u32(p + off::kSequence, pose.has_sequence ? pose.sequence : 0u, le);
   bytes::store_f64(p + off::kSenderTime, pose.has_sender_time ? pose.sender_time_s : 0.0, le);
   bytes::store_f64(p + off::kPositionXY, pose.position.x, le);
@@ -74,12 +68,7 @@ DecodeResult decode_can_fd_pose(const CanFrame& frame) {
   if (p[off::kVersion] != kCanFdPoseVersion) return rejected(Reject::BadVersion);
   if (crc32(std::span<const std::uint8_t>(p, off::kCrc)) != bytes::load_u32(p + off::kCrc, le)) return rejected(Reject::BadCrc);
   PoseMessage m;
-  const std::uint8_t flags = p[off::kFlags];  // unknown bits ignored
-  m.frame = (flags & kCanFdFlagGeodetic) ? PoseMessage::Frame::Geodetic : PoseMessage::Frame::Local;
-  m.has_rates = (flags & kCanFdFlagRates) != 0;
-  m.has_velocity = (flags & kCanFdFlagVelocity) != 0;
-  m.has_sequence = (flags & kCanFdFlagSequence) != 0;
-  m.has_sender_time = (flags & kCanFdFlagSenderTime) != 0;
+  apply_pose_content_flags(p[off::kFlags], m);
   if (m.has_sequence) m.sequence = bytes::load_u32(p + off::kSequence, le);
   if (m.has_sender_time) m.sender_time_s = bytes::load_f64(p + off::kSenderTime, le);
   m.position.x = bytes::load_f64(p + off::kPositionXY, le);

@@ -19,11 +19,11 @@ inline constexpr std::uint8_t kCanFdPoseMagic1 = 'F';
 inline constexpr std::uint8_t kCanFdPoseVersion = 1;
 
 // Flag bits (u8 at offset 3): same meaning as the native kNativeFlag* bits.
-inline constexpr std::uint8_t kCanFdFlagGeodetic = 1u << 0;
-inline constexpr std::uint8_t kCanFdFlagRates = 1u << 1;
-inline constexpr std::uint8_t kCanFdFlagVelocity = 1u << 2;
-inline constexpr std::uint8_t kCanFdFlagSequence = 1u << 3;
-inline constexpr std::uint8_t kCanFdFlagSenderTime = 1u << 4;
+inline constexpr std::uint8_t kCanFdFlagGeodetic = kPoseFlagGeodetic;
+inline constexpr std::uint8_t kCanFdFlagRates = kPoseFlagRates;
+inline constexpr std::uint8_t kCanFdFlagVelocity = kPoseFlagVelocity;
+inline constexpr std::uint8_t kCanFdFlagSequence = kPoseFlagSequence;
+inline constexpr std::uint8_t kCanFdFlagSenderTime = kPoseFlagSenderTime;
 
 // Rates and velocity are scaled i16: value = raw * scale. +-32767 is the
 // saturated end of the range; -32768 marks a value that was not finite (the

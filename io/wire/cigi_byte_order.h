@@ -3,7 +3,9 @@
 // Frame magic (0x8000 read in its own order), ours for replies to a host
 // whose order differs (CIGI lets the IG answer in either). Shared by the
 // pose intake (cigi.cpp), host queries (cigi_queries.cpp) and views (cigi_views.cpp).
+// Also the packet walk of a host datagram the query and view decoders share.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -33,6 +35,25 @@ inline std::optional<bytes::Order> cigi_host_datagram_order(std::span<const std:
       p[1] != kCigiIgControlSize || p[2] != kCigiMajorVersion)
     return std::nullopt;
   return cigi_order_from_magic(p + 6);
+}
+
+// Walks the packets after a host datagram's IG Control: on_packet(op, packet,
+// size) for each one its size byte frames; where the rest cannot be framed
+// (size 0 or past the end), on_truncated(op) and the walk ends.
+template <class OnPacket, class OnTruncated>
+void for_each_cigi_host_packet(std::span<const std::uint8_t> data, OnPacket&& on_packet, OnTruncated&& on_truncated) {
+  const std::size_t n = data.size();
+  const std::uint8_t* p = data.data();
+  for (std::size_t off = kCigiIgControlSize; off < n;) {
+    const std::size_t left = n - off;
+    const std::size_t size = left >= 2 ? p[off + 1] : 0;
+    if (size == 0 || size > left) {
+      on_truncated(p[off]);
+      return;
+    }
+    on_packet(p[off], p + off, size);
+    off += size;
+  }
 }
 
 }  // namespace ig::io::wire

@@ -58,20 +58,28 @@ std::variant<HatHotRequest, QueryReject> decode_hat_hot(const std::uint8_t* p, O
   return r;
 }
 
+// Both LOS requests open alike: [2] id, [4] bit 0 extended, bit 1 source
+// coordinates, [5] alpha threshold, [6] entity; the rest of [4] differs.
+template <class LosRequest>
+LosRequest load_los_head(const std::uint8_t* p, Order o) {
+  LosRequest r;
+  r.id = bytes::load_u16(p + 2, o);
+  r.extended = p[4] & 1u;
+  r.source_coords = coords_bit(p[4], 1);
+  r.alpha_threshold = p[5];
+  r.entity = bytes::load_u16(p + 6, o);
+  return r;
+}
+
 // LOS Segment Request: [2] id, [4] bit 0 extended, 1 source coords,
 // 2 destination coords, 3 response coords, 4 destination entity valid;
 // [5] alpha threshold, [6] entity, [8] source (3 x f64), [32] destination,
 // [56] material mask, [60] update period, [62] destination entity.
 std::variant<LosSegmentRequest, QueryReject> decode_los_segment(const std::uint8_t* p, Order o) {
-  LosSegmentRequest r;
-  r.id = bytes::load_u16(p + 2, o);
-  r.extended = p[4] & 1u;
-  r.source_coords = coords_bit(p[4], 1);
+  auto r = load_los_head<LosSegmentRequest>(p, o);
   r.destination_coords = coords_bit(p[4], 2);
   r.response_coords = coords_bit(p[4], 3);
   r.destination_entity_valid = (p[4] >> 4) & 1u;
-  r.alpha_threshold = p[5];
-  r.entity = bytes::load_u16(p + 6, o);
   r.source = load_point(p + 8, o);
   r.destination = load_point(p + 32, o);
   r.material_mask = bytes::load_u32(p + 56, o);
@@ -87,13 +95,8 @@ std::variant<LosSegmentRequest, QueryReject> decode_los_segment(const std::uint8
 // [16] min range, [20] max range, [24] source (3 x f64), [48] material mask,
 // [52] update period.
 std::variant<LosVectorRequest, QueryReject> decode_los_vector(const std::uint8_t* p, Order o) {
-  LosVectorRequest r;
-  r.id = bytes::load_u16(p + 2, o);
-  r.extended = p[4] & 1u;
-  r.source_coords = coords_bit(p[4], 1);
+  auto r = load_los_head<LosVectorRequest>(p, o);
   r.response_coords = coords_bit(p[4], 2);
-  r.alpha_threshold = p[5];
-  r.entity = bytes::load_u16(p + 6, o);
   r.azimuth_deg = bytes::load_f32(p + 8, o);
   r.elevation_deg = bytes::load_f32(p + 12, o);
   r.min_range_m = bytes::load_f32(p + 16, o);
@@ -128,6 +131,15 @@ void header(std::uint8_t* p, std::uint8_t op, std::size_t size, std::uint16_t id
 
 std::uint8_t lsn(std::uint32_t host_frame) { return static_cast<std::uint8_t>((host_frame & 0xFu) << 4); }
 
+// The head load_los_head reads; the caller adds its own bits of [4].
+template <class LosRequest>
+void store_los_head(std::uint8_t* p, std::uint8_t op, std::size_t size, const LosRequest& r, Order o) {
+  header(p, op, size, r.id, o);
+  p[4] = static_cast<std::uint8_t>(std::uint8_t(r.extended) | (std::uint8_t(r.source_coords) << 1));
+  p[5] = r.alpha_threshold;
+  bytes::store_u16(p + 6, r.entity, o);
+}
+
 }  // namespace
 
 std::uint16_t request_id(const CigiRequest& r) {
@@ -150,28 +162,17 @@ const char* query_reject_name(QueryReject r) {
 
 CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const CigiRequestLimits& limits) {
   CigiRequests out;
-  const std::size_t n = data.size();
-  const std::uint8_t* p = data.data();
   // The datagram's framing, as decode_cigi_host_datagram checks it.
   const std::optional<Order> order = cigi_host_datagram_order(data);
   if (!order) return out;
   const Order o = *order;
   out.byte_swapped = o != bytes::kHostOrder;
-  out.host_frame = bytes::load_u32(p + 8, o);
-  for (std::size_t off = kCigiIgControlSize; off < n;) {
-    const std::size_t left = n - off;
-    const std::size_t size = left >= 2 ? p[off + 1] : 0;
-    if (size == 0 || size > left) {
-      // The rest cannot be framed; a request opcode there is a truncated request.
-      if (request_size(p[off])) out.rejects.push_back(QueryReject::Truncated);
-      break;
-    }
-    const std::uint8_t op = p[off];
+  out.host_frame = bytes::load_u32(data.data() + 8, o);
+  auto on_packet = [&](std::uint8_t op, const std::uint8_t* q, std::size_t size) {
     const std::size_t want = request_size(op);
     if (want && size != want) {
       out.rejects.push_back(QueryReject::WrongSize);
     } else if (want) {
-      const std::uint8_t* q = p + off;
       auto take = [&](auto decoded) {
         if (const auto* bad = std::get_if<QueryReject>(&decoded)) {
           out.rejects.push_back(*bad);
@@ -187,8 +188,11 @@ CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const Cigi
       else if (op == kCigiOpLosSegmentRequest) take(decode_los_segment(q, o));
       else take(decode_los_vector(q, o));
     }
-    off += size;
-  }
+  };
+  // A request opcode where the rest cannot be framed is a truncated request.
+  for_each_cigi_host_packet(data, on_packet, [&](std::uint8_t op) {
+    if (request_size(op)) out.rejects.push_back(QueryReject::Truncated);
+  });
   return out;
 }
 
@@ -207,13 +211,10 @@ std::array<std::uint8_t, kCigiLosSegmentRequestSize> encode_cigi_los_segment_req
                                                                                      bool swap) {
   const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiLosSegmentRequestSize> b{};
-  header(b.data(), kCigiOpLosSegmentRequest, b.size(), r.id, o);
-  b[4] = static_cast<std::uint8_t>(std::uint8_t(r.extended) | (std::uint8_t(r.source_coords) << 1) |
-                                   (std::uint8_t(r.destination_coords) << 2) |
-                                   (std::uint8_t(r.response_coords) << 3) |
-                                   (std::uint8_t(r.destination_entity_valid) << 4));
-  b[5] = r.alpha_threshold;
-  bytes::store_u16(b.data() + 6, r.entity, o);
+  store_los_head(b.data(), kCigiOpLosSegmentRequest, b.size(), r, o);
+  b[4] |= static_cast<std::uint8_t>((std::uint8_t(r.destination_coords) << 2) |
+                                    (std::uint8_t(r.response_coords) << 3) |
+                                    (std::uint8_t(r.destination_entity_valid) << 4));
   store_point(b.data() + 8, r.source, o);
   store_point(b.data() + 32, r.destination, o);
   bytes::store_u32(b.data() + 56, r.material_mask, o);
@@ -226,11 +227,8 @@ std::array<std::uint8_t, kCigiLosVectorRequestSize> encode_cigi_los_vector_reque
                                                                                    bool swap) {
   const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiLosVectorRequestSize> b{};
-  header(b.data(), kCigiOpLosVectorRequest, b.size(), r.id, o);
-  b[4] = static_cast<std::uint8_t>(std::uint8_t(r.extended) | (std::uint8_t(r.source_coords) << 1) |
-                                   (std::uint8_t(r.response_coords) << 2));
-  b[5] = r.alpha_threshold;
-  bytes::store_u16(b.data() + 6, r.entity, o);
+  store_los_head(b.data(), kCigiOpLosVectorRequest, b.size(), r, o);
+  b[4] |= static_cast<std::uint8_t>(std::uint8_t(r.response_coords) << 2);
   bytes::store_f32(b.data() + 8, r.azimuth_deg, o);
   bytes::store_f32(b.data() + 12, r.elevation_deg, o);
   bytes::store_f32(b.data() + 16, r.min_range_m, o);

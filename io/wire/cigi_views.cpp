@@ -25,6 +25,15 @@ void store_six(std::uint8_t* p, Order o, std::array<const std::optional<float>*,
   }
 }
 
+// Both view packets open alike: [0] opcode, [1] size, [2] view, [4] group.
+void store_view_head(std::uint8_t* p, std::uint8_t op, std::size_t size, std::uint16_t view, std::uint8_t group,
+                     Order o) {
+  p[0] = op;
+  p[1] = std::uint8_t(size);
+  bytes::store_u16(p + 2, view, o);
+  p[4] = group;
+}
+
 bool finite(const std::optional<float>& v) { return !v || std::isfinite(*v); }
 bool within(const std::optional<float>& v, float limit) { return !v || std::abs(*v) <= limit; }
 
@@ -54,27 +63,16 @@ std::optional<QueryReject> check(const CigiViewDefinition& v) {
 
 CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
   CigiViewPackets out;
-  const std::size_t n = data.size();
-  const std::uint8_t* p = data.data();
   // The datagram's framing, as decode_cigi_host_datagram checks it.
   const std::optional<Order> order = cigi_host_datagram_order(data);
   if (!order) return out;
   const Order o = *order;
-  for (std::size_t off = kCigiIgControlSize; off < n;) {
-    const std::size_t left = n - off;
-    const std::uint8_t op = p[off];
-    const bool view_packet = op == kCigiOpViewControl || op == kCigiOpViewDefinition;
-    const std::size_t size = left >= 2 ? p[off + 1] : 0;
-    if (size == 0 || size > left) {
-      if (view_packet) out.rejects.push_back(QueryReject::Truncated);
-      break;
-    }
-    const std::uint8_t* q = p + off;
-    off += size;
-    if (!view_packet) continue;
+  auto view_packet = [](std::uint8_t op) { return op == kCigiOpViewControl || op == kCigiOpViewDefinition; };
+  auto on_packet = [&](std::uint8_t op, const std::uint8_t* q, std::size_t size) {
+    if (!view_packet(op)) return;
     if (size != 32) {
       out.rejects.push_back(QueryReject::WrongSize);
-      continue;
+      return;
     }
     if (op == kCigiOpViewControl) {
       CigiViewControl v;
@@ -94,17 +92,17 @@ CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
       if (const auto bad = check(v)) out.rejects.push_back(*bad);
       else out.definitions.push_back(v);
     }
-  }
+  };
+  for_each_cigi_host_packet(data, on_packet, [&](std::uint8_t op) {
+    if (view_packet(op)) out.rejects.push_back(QueryReject::Truncated);
+  });
   return out;
 }
 
 std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const CigiViewControl& v, bool swap) {
   const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiViewControlSize> b{};
-  b[0] = kCigiOpViewControl;
-  b[1] = std::uint8_t(b.size());
-  bytes::store_u16(b.data() + 2, v.view, o);
-  b[4] = v.group;
+  store_view_head(b.data(), kCigiOpViewControl, b.size(), v.view, v.group, o);
   bytes::store_u16(b.data() + 6, v.entity, o);
   store_six(b.data(), o, {&v.x_m, &v.y_m, &v.z_m, &v.roll_deg, &v.pitch_deg, &v.yaw_deg}, b[5]);
   return b;
@@ -113,10 +111,7 @@ std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const Ci
 std::array<std::uint8_t, kCigiViewDefinitionSize> encode_cigi_view_definition(const CigiViewDefinition& v, bool swap) {
   const Order o = cigi_out_order(swap);
   std::array<std::uint8_t, kCigiViewDefinitionSize> b{};
-  b[0] = kCigiOpViewDefinition;
-  b[1] = std::uint8_t(b.size());
-  bytes::store_u16(b.data() + 2, v.view, o);
-  b[4] = v.group;
+  store_view_head(b.data(), kCigiOpViewDefinition, b.size(), v.view, v.group, o);
   std::uint8_t enabled = 0;
   store_six(b.data(), o, {&v.near_m, &v.far_m, &v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg}, enabled);
   b[5] = std::uint8_t(enabled | (v.mirror << 6));

@@ -16,13 +16,7 @@ std::array<std::uint8_t, kNativeSize> encode_native(const PoseMessage& pose) {
   const Order le = Order::Little;
   std::copy(kNativeMagic.begin(), kNativeMagic.end(), p + off::kMagic);
   bytes::store_u16(p + off::kVersion, kNativeVersion, le);
-  std::uint16_t flags = 0;
-  if (pose.frame == PoseMessage::Frame::Geodetic) flags |= kNativeFlagGeodetic;
-  if (pose.has_rates) flags |= kNativeFlagRates;
-  if (pose.has_velocity) flags |= kNativeFlagVelocity;
-  if (pose.has_sequence) flags |= kNativeFlagSequence;
-  if (pose.has_sender_time) flags |= kNativeFlagSenderTime;
-  bytes::store_u16(p + off::kFlags, flags, le);
+  bytes::store_u16(p + off::kFlags, pose_content_flags(pose), le);
   bytes::store_u32(p + off::kSequence, pose.has_sequence ? pose.sequence : 0u, le);
   bytes::store_f64(p + off::kSenderTime, pose.has_sender_time ? pose.sender_time_s : 0.0, le);
   for (int i = 0; i < 3; ++i) bytes::store_f64(p + off::kPosition + 8 * i, pose.position[i], le);
@@ -49,12 +43,7 @@ DecodeResult decode_native(std::span<const std::uint8_t> data) {
   if (crc32(std::span<const std::uint8_t>(p, off::kCrc)) != bytes::load_u32(p + off::kCrc, le)) return rejected(Reject::BadCrc);
 
   PoseMessage m;
-  const std::uint16_t flags = bytes::load_u16(p + off::kFlags, le);  // unknown bits ignored
-  m.frame = (flags & kNativeFlagGeodetic) ? PoseMessage::Frame::Geodetic : PoseMessage::Frame::Local;
-  m.has_rates = (flags & kNativeFlagRates) != 0;
-  m.has_velocity = (flags & kNativeFlagVelocity) != 0;
-  m.has_sequence = (flags & kNativeFlagSequence) != 0;
-  m.has_sender_time = (flags & kNativeFlagSenderTime) != 0;
+  apply_pose_content_flags(bytes::load_u16(p + off::kFlags, le), m);
   if (m.has_sequence) m.sequence = bytes::load_u32(p + off::kSequence, le);
   if (m.has_sender_time) m.sender_time_s = bytes::load_f64(p + off::kSenderTime, le);
   for (int i = 0; i < 3; ++i) m.position[i] = bytes::load_f64(p + off::kPosition + 8 * i, le);

@@ -15,12 +15,12 @@ inline constexpr std::size_t kNativeSize = 128;
 inline constexpr std::uint16_t kNativeVersion = 1;
 inline constexpr std::array<std::uint8_t, 4> kNativeMagic{'I', 'G', 'P', 'S'};
 
-// Flag bits (u16 at offset 6).
-inline constexpr std::uint16_t kNativeFlagGeodetic = 1u << 0;
-inline constexpr std::uint16_t kNativeFlagRates = 1u << 1;
-inline constexpr std::uint16_t kNativeFlagVelocity = 1u << 2;
-inline constexpr std::uint16_t kNativeFlagSequence = 1u << 3;
-inline constexpr std::uint16_t kNativeFlagSenderTime = 1u << 4;
+// Flag bits (u16 at offset 6): the content flags of pose_message.h.
+inline constexpr std::uint16_t kNativeFlagGeodetic = kPoseFlagGeodetic;
+inline constexpr std::uint16_t kNativeFlagRates = kPoseFlagRates;
+inline constexpr std::uint16_t kNativeFlagVelocity = kPoseFlagVelocity;
+inline constexpr std::uint16_t kNativeFlagSequence = kPoseFlagSequence;
+inline constexpr std::uint16_t kNativeFlagSenderTime = kPoseFlagSenderTime;
 
 // Field offsets (bytes).
 namespace native_offset {

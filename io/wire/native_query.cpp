@@ -38,6 +38,19 @@ bool sealed(const std::uint8_t* p) {
   return bytes::load_u32(p + kCrcAt, kLe) == crc32(std::span<const std::uint8_t>(p, kCrcAt));
 }
 
+// A query and its answer open alike: [0] magic, [4] u16 version, [6] u8
+// kind, [7] u8 flags, [8] u32 id.
+std::array<std::uint8_t, kNativeQuerySize> open_packet(const std::array<std::uint8_t, 4>& magic, NativeQueryKind kind,
+                                                       std::uint8_t flags, std::uint32_t id) {
+  std::array<std::uint8_t, kNativeQuerySize> b{};
+  std::copy(magic.begin(), magic.end(), b.begin());
+  bytes::store_u16(b.data() + 4, kNativeQueryVersion, kLe);
+  b[6] = std::uint8_t(kind);
+  b[7] = flags;
+  bytes::store_u32(b.data() + 8, id, kLe);
+  return b;
+}
+
 }  // namespace
 
 const char* native_query_reject_name(NativeQueryReject r) {
@@ -109,12 +122,7 @@ NativeQueryResult decode_native_query(std::span<const std::uint8_t> d) {
 }
 
 std::array<std::uint8_t, kNativeQuerySize> encode_native_query(const NativeQuery& q) {
-  std::array<std::uint8_t, kNativeQuerySize> b{};
-  std::copy(kNativeQueryMagic.begin(), kNativeQueryMagic.end(), b.begin());
-  bytes::store_u16(b.data() + 4, kNativeQueryVersion, kLe);
-  b[6] = std::uint8_t(q.kind);
-  b[7] = q.geodetic ? kFlagGeodetic : 0;
-  bytes::store_u32(b.data() + 8, q.id, kLe);
+  auto b = open_packet(kNativeQueryMagic, q.kind, q.geodetic ? kFlagGeodetic : 0, q.id);
   store3(b.data() + 16, q.a);
   store3(b.data() + 40, q.b);
   bytes::store_f64(b.data() + 64, q.min_range_m, kLe);
@@ -128,12 +136,9 @@ std::array<std::uint8_t, kNativeQuerySize> encode_native_query(const NativeQuery
 // [24] f64 HAT, [32] point (3 x f64), [56] normal (3 x f64), [80] reserved,
 // [92] CRC-32 of [0, 92).
 std::array<std::uint8_t, kNativeQuerySize> encode_native_answer(const NativeAnswer& a) {
-  std::array<std::uint8_t, kNativeQuerySize> b{};
-  std::copy(kNativeAnswerMagic.begin(), kNativeAnswerMagic.end(), b.begin());
-  bytes::store_u16(b.data() + 4, kNativeQueryVersion, kLe);
-  b[6] = std::uint8_t(a.kind);
-  b[7] = std::uint8_t((a.geodetic ? kFlagGeodetic : 0) | (a.valid ? kFlagValid : 0) | (a.hit ? kFlagHit : 0));
-  bytes::store_u32(b.data() + 8, a.id, kLe);
+  const auto flags =
+      std::uint8_t((a.geodetic ? kFlagGeodetic : 0) | (a.valid ? kFlagValid : 0) | (a.hit ? kFlagHit : 0));
+  auto b = open_packet(kNativeAnswerMagic, a.kind, flags, a.id);
   bytes::store_u32(b.data() + 12, a.ig_frame, kLe);
   bytes::store_f64(b.data() + 16, a.hot_or_range_m, kLe);
   bytes::store_f64(b.data() + 24, a.hat_m, kLe);

@@ -145,6 +145,24 @@ std::optional<Reject> fixed_size_reject(std::size_t size, std::size_t expected) 
   return std::nullopt;
 }
 
+std::uint16_t pose_content_flags(const PoseMessage& pose) {
+  std::uint16_t flags = 0;
+  if (pose.frame == PoseMessage::Frame::Geodetic) flags |= kPoseFlagGeodetic;
+  if (pose.has_rates) flags |= kPoseFlagRates;
+  if (pose.has_velocity) flags |= kPoseFlagVelocity;
+  if (pose.has_sequence) flags |= kPoseFlagSequence;
+  if (pose.has_sender_time) flags |= kPoseFlagSenderTime;
+  return flags;
+}
+
+void apply_pose_content_flags(std::uint16_t flags, PoseMessage& pose) {
+  pose.frame = (flags & kPoseFlagGeodetic) ? PoseMessage::Frame::Geodetic : PoseMessage::Frame::Local;
+  pose.has_rates = (flags & kPoseFlagRates) != 0;
+  pose.has_velocity = (flags & kPoseFlagVelocity) != 0;
+  pose.has_sequence = (flags & kPoseFlagSequence) != 0;
+  pose.has_sender_time = (flags & kPoseFlagSenderTime) != 0;
+}
+
 DecodeResult finish_decode(PoseMessage pose, DecodeResult r) {
   if (auto why = validate_and_normalize(pose)) {
     r.reject = *why;

@@ -95,6 +95,17 @@ DecodeResult rejected(Reject why);
 std::optional<Reject> fixed_size_reject(std::size_t size, std::size_t expected);
 DecodeResult finish_decode(PoseMessage pose, DecodeResult r = {});
 
+// The content flags the native and CAN FD pose formats share (each names
+// them its own way): which frame, and which optional fields the datagram
+// carries. Unknown bits are ignored on decode.
+inline constexpr std::uint16_t kPoseFlagGeodetic = 1u << 0;
+inline constexpr std::uint16_t kPoseFlagRates = 1u << 1;
+inline constexpr std::uint16_t kPoseFlagVelocity = 1u << 2;
+inline constexpr std::uint16_t kPoseFlagSequence = 1u << 3;
+inline constexpr std::uint16_t kPoseFlagSenderTime = 1u << 4;
+std::uint16_t pose_content_flags(const PoseMessage& pose);
+void apply_pose_content_flags(std::uint16_t flags, PoseMessage& pose);
+
 // True when `pose` is what a decoder may return (finite, in normalised
 // ranges). Used by the tests and fuzz targets.
 bool is_valid_output(const PoseMessage& pose);
