@@ -21,34 +21,34 @@ Buffer create_buffer(const void* data, std::size_t bytes, GLbitfield flags) {
   return b;
 }
 
-Buffer create_buffer() {
+namespace {
+// A new GL name from `make` (one of the glCreate*/glGen* calls), owned by a handle.
+template <class Handle, class Make>
+Handle named(Make make) {
   GLuint id = 0;
-  glCreateBuffers(1, &id);
-  return Buffer(id);
+  make(&id);
+  return Handle(id);
+}
+}  // namespace
+
+Buffer create_buffer() {
+  return named<Buffer>([&](GLuint* id) { glCreateBuffers(1, id); });
 }
 
 VertexArray create_vertex_array() {
-  GLuint id = 0;
-  glCreateVertexArrays(1, &id);
-  return VertexArray(id);
+  return named<VertexArray>([&](GLuint* id) { glCreateVertexArrays(1, id); });
 }
 
 Texture create_texture(GLenum target) {
-  GLuint id = 0;
-  glCreateTextures(target, 1, &id);
-  return Texture(id);
+  return named<Texture>([&](GLuint* id) { glCreateTextures(target, 1, id); });
 }
 
 Framebuffer create_framebuffer() {
-  GLuint id = 0;
-  glCreateFramebuffers(1, &id);
-  return Framebuffer(id);
+  return named<Framebuffer>([&](GLuint* id) { glCreateFramebuffers(1, id); });
 }
 
 Query create_query() {
-  GLuint id = 0;
-  glGenQueries(1, &id);
-  return Query(id);
+  return named<Query>([&](GLuint* id) { glGenQueries(1, id); });
 }
 
 void vertex_attrib_int(const VertexArray& vao, GLuint index, GLint size, GLenum type, GLuint offset, GLuint binding) {

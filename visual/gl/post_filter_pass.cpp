@@ -1,5 +1,6 @@
 #include "gl/post_filter_pass.h"
 
+#include "gl/fullscreen_triangle.h"
 #include "gl/texture_units.h"
 
 namespace ig::gl {
@@ -12,13 +13,9 @@ void PostFilterPass::run(const RenderTarget& target, PassRecorder& recorder) {
     empty_vao_ = create_vertex_array();
   }
   program_.use();
-  glBindVertexArray(empty_vao_.id());
   glBindTextureUnit(unit(TextureUnit::kFrameColor), target.drawn_color_texture());
   program_.set("u_frame", unit(TextureUnit::kFrameColor));
-  recorder.begin("aa");
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  count_draw();
-  recorder.end();
+  draw_fullscreen_triangle(empty_vao_, recorder, "aa");
   glEnable(GL_DEPTH_TEST);
 }
 

@@ -23,6 +23,17 @@ std::string read_text(const std::string& path) {
   return ss.str();
 }
 
+// A shader's or program's info log (get_iv / get_log: the glGet*iv and
+// glGet*InfoLog pair of its kind).
+template <class GetIv, class GetLog>
+std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
+  GLint len = 0;
+  get_iv(object, GL_INFO_LOG_LENGTH, &len);
+  std::string log(std::max(len, 1), '\0');
+  get_log(object, len, nullptr, log.data());
+  return log;
+}
+
 GLuint compile(GLenum stage, const std::string& path) {
   const std::string source = read_text(path);
   GLuint s = glCreateShader(stage);
@@ -32,10 +43,7 @@ GLuint compile(GLenum stage, const std::string& path) {
   GLint ok = 0;
   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint len = 0;
-    glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
-    std::string log(std::max(len, 1), '\0');
-    glGetShaderInfoLog(s, len, nullptr, log.data());
+    const std::string log = info_log(s, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(s);
     throw GlError("shader " + path + ": compile failed: " + log);
   }
@@ -69,10 +77,7 @@ ShaderProgram::ShaderProgram(const std::string& dir, const std::string& vertex_f
   GLint ok = 0;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint len = 0;
-    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
-    std::string log(std::max(len, 1), '\0');
-    glGetProgramInfoLog(id_, len, nullptr, log.data());
+    const std::string log = info_log(id_, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(id_);
     id_ = 0;
     throw GlError("program " + dir + "/{" + names + "}: link failed: " + log);

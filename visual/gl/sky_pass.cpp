@@ -1,5 +1,7 @@
 #include "gl/sky_pass.h"
 
+#include "gl/fullscreen_triangle.h"
+
 namespace ig::gl {
 
 SkyPass::SkyPass(const std::string& shader_dir)
@@ -16,11 +18,7 @@ void SkyPass::draw(const glm::mat4& inv_view_proj, const environment::SkyLight& 
   glDisable(GL_CULL_FACE);
   glDepthFunc(GL_GEQUAL);  // only where the depth buffer still holds the clear value
   glDepthMask(GL_FALSE);
-  glBindVertexArray(empty_vao_.id());
-  recorder.begin("sky");
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  count_draw();
-  recorder.end();
+  draw_fullscreen_triangle(empty_vao_, recorder, "sky");
   glDepthMask(GL_TRUE);
 }
 

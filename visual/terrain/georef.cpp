@@ -9,14 +9,25 @@
 
 namespace ig::terrain {
 
-std::optional<glm::dvec2> geodetic_to_local(const Heightfield& hf, double lat_deg, double lon_deg) {
-  if (!hf.georef || !std::isfinite(lat_deg) || !std::isfinite(lon_deg)) return std::nullopt;
+namespace {
+
+// WGS84 longitude/latitude to the DEM's CRS (to_dem), or back; null when
+// the DEM's CRS cannot be read or no transformation exists.
+std::unique_ptr<OGRCoordinateTransformation> wgs84_transform(const GeoReference& georef, bool to_dem) {
   OGRSpatialReference wgs84, dem;
   wgs84.SetWellKnownGeogCS("WGS84");
   wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = lon, y = lat
-  if (dem.importFromWkt(hf.georef->crs_wkt.c_str()) != OGRERR_NONE) return std::nullopt;
+  if (dem.importFromWkt(georef.crs_wkt.c_str()) != OGRERR_NONE) return nullptr;
   dem.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&wgs84, &dem));
+  return std::unique_ptr<OGRCoordinateTransformation>(
+      to_dem ? OGRCreateCoordinateTransformation(&wgs84, &dem) : OGRCreateCoordinateTransformation(&dem, &wgs84));
+}
+
+}  // namespace
+
+std::optional<glm::dvec2> geodetic_to_local(const Heightfield& hf, double lat_deg, double lon_deg) {
+  if (!hf.georef || !std::isfinite(lat_deg) || !std::isfinite(lon_deg)) return std::nullopt;
+  const auto ct = wgs84_transform(*hf.georef, true);
   if (!ct) return std::nullopt;
   double x = lon_deg, y = lat_deg;
   if (!ct->Transform(1, &x, &y)) return std::nullopt;
@@ -32,12 +43,7 @@ std::optional<glm::dvec2> geodetic_to_local(const Heightfield& hf, double lat_de
 
 std::optional<glm::dvec2> local_to_geodetic(const Heightfield& hf, double x_m, double y_m) {
   if (!hf.georef || !std::isfinite(x_m) || !std::isfinite(y_m)) return std::nullopt;
-  OGRSpatialReference wgs84, dem;
-  wgs84.SetWellKnownGeogCS("WGS84");
-  wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = lon, y = lat
-  if (dem.importFromWkt(hf.georef->crs_wkt.c_str()) != OGRERR_NONE) return std::nullopt;
-  dem.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&dem, &wgs84));
+  const auto ct = wgs84_transform(*hf.georef, false);
   if (!ct) return std::nullopt;
   const auto& g = hf.georef->grid_to_crs;
   const double i = x_m / hf.spacing_x_m, j = y_m / hf.spacing_y_m;

@@ -14,7 +14,6 @@ namespace {
 
 using ig::render::CdlodMethod;
 using lod_views::Frame;
-using lod_views::World;
 
 class CdlodTest : public lod_views::ReferenceFramesTest {};
 

@@ -15,7 +15,6 @@ namespace {
 
 using ig::render::ChunkedMethod;
 using lod_views::Frame;
-using lod_views::World;
 
 class ChunkedTest : public lod_views::ReferenceFramesTest {};
 

@@ -13,7 +13,6 @@ namespace {
 
 using ig::render::GeoMipMapMethod;
 using lod_views::Frame;
-using lod_views::World;
 
 class GeoMipMapTest : public lod_views::ReferenceFramesTest {};
 

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/test/frame_dump.h"
 #include "capture/png_writer.h"
 #include "gl/gl_context.h"
 #include "gl/render_target.h"
@@ -124,13 +125,13 @@ struct Frame {
   bool terrain(int x, int y) const { return depth[size_t(y) * w + x] > 0.0f; }
 };
 
-inline void dump(const Frame& f, const std::string& name) {
-  const char* dir = std::getenv("IG_LOD_DUMP");
-  if (!dir || !*dir) return;
-  auto rgba = f.rgba;
-  for (size_t p = 3; p < rgba.size(); p += 4) rgba[p] = 255;
-  ig::capture::write_png_rgba(std::string(dir) + "/" + name + ".png", rgba, f.w, f.h);
+// One context and 513 x 513 terrain for a whole test binary (one GL context per process).
+inline World& shared_world() {
+  static World w(513, 4);
+  return w;
 }
+
+inline void dump(const Frame& f, const std::string& name) { dump_frame("IG_LOD_DUMP", f.rgba, f.w, f.h, name); }
 
 // Renders one view of `scene` (world.scene unless given) with the method.
 inline Frame render(World& world, ig::render::TerrainMethod& method, const ig::render::Camera& camera,

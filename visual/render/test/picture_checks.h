@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/scenario.h"
+#include "render/test/headless_run.h"
 #include "session/scenario_runner.h"
 
 namespace picture {
@@ -40,11 +41,7 @@ inline std::string dem_dir() {
 inline Shot render(ig::io::Scenario scenario, int frame, const ShotSpec& spec) {
   scenario.render.antialiasing = spec.aa;  // msaa: the default 4 samples
   scenario.render.shading.ground_detail = spec.detail;
-  ig::session::RunOptions o;
-  o.width = spec.w;
-  o.height = spec.h;
-  o.headless = true;
-  o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
+  ig::session::RunOptions o = headless_run(spec.w, spec.h);
   o.method = spec.method;
   ig::session::ScenarioRunner runner(std::move(scenario), o);
   runner.render_frame(frame);

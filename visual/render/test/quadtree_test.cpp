@@ -19,11 +19,7 @@ namespace {
 using ig::render::QuadtreeMethod;
 using lod_views::World;
 
-// One context and terrain for the whole binary (one context per process).
-World& world() {
-  static World w(513, 4);
-  return w;
-}
+World& world() { return lod_views::shared_world(); }
 
 // Leaves sharing an edge differ by at most one level (cells inside the DEM).
 bool levels_restricted(const ig::lod::QuadtreeTessellator& q, const ig::terrain::Heightfield& hf) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "io/scenario.h"
+#include "render/test/headless_run.h"
 #include "session/scenario_runner.h"
 #include "terrain/height_pyramid.h"
 #include "terrain/ray_cast.h"
@@ -21,13 +22,7 @@ ig::io::Scenario default_scenario() {
 }
 
 RunOptions small_headless() {
-  RunOptions o;
-  o.width = kW;
-  o.height = kH;
-  o.headless = true;
-  o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
-  o.method = "reference";  // these tests are about the reference renderer
-  return o;
+  return headless_run(kW, kH, "reference");  // these tests are about the reference renderer
 }
 
 TEST(DefaultScenario, FirstFrameHasSkyAboveAndTerrainBelow) {

@@ -20,11 +20,7 @@ using ig::render::RoamMethod;
 using lod_views::kH;
 using lod_views::World;
 
-// One context and terrain for the whole binary (one context per process).
-World& world() {
-  static World w(513, 4);
-  return w;
-}
+World& world() { return lod_views::shared_world(); }
 
 TEST(Roam, NoHolesAgainstTheReferenceAtManyViews) {
   auto& w = world();

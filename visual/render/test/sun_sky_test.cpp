@@ -11,6 +11,7 @@
 
 #include "io/scenario.h"
 #include "io/utc_time.h"
+#include "render/test/headless_run.h"
 #include "session/scenario_runner.h"
 
 namespace {
@@ -31,12 +32,7 @@ ig::io::Scenario default_at(const std::string& time_utc) {
 }
 
 RunOptions small_headless() {
-  RunOptions o;
-  o.width = kW;
-  o.height = kH;
-  o.headless = true;
-  o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
-  return o;
+  return headless_run(kW, kH);
 }
 
 // Luma (Rec. 709 weights, 8-bit levels) of the sky and the terrain pixels of frame 0.

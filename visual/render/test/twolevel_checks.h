@@ -18,6 +18,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/test/frame_dump.h"
 #include "capture/png_writer.h"
 #include "session/scenario_runner.h"
 #include "io/pose.h"
@@ -110,13 +111,7 @@ inline Frame grab(ScenarioRunner& r) {
 
 // With IG_TWOLEVEL_DUMP=<dir> set, frames are written there as PNG (alpha
 // forced opaque) for a look.
-inline void dump(const Frame& f, const std::string& name) {
-  const char* dir = std::getenv("IG_TWOLEVEL_DUMP");
-  if (!dir || !*dir) return;
-  auto rgba = f.rgba;
-  for (size_t p = 3; p < rgba.size(); p += 4) rgba[p] = 255;
-  ig::capture::write_png_rgba(std::string(dir) + "/" + name + ".png", rgba, f.w, f.h);
-}
+inline void dump(const Frame& f, const std::string& name) { dump_frame("IG_TWOLEVEL_DUMP", f.rgba, f.w, f.h, name); }
 
 inline void record(const std::string& name, double value) {
   ::testing::Test::RecordProperty(name, std::to_string(value));
