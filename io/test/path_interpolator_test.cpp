@@ -11,13 +11,7 @@ namespace {
 using namespace ig::io;
 
 PathKey key(double t, double x, double y, double z, double h = 0, double p = 0, double r = 0) {
-  PathKey k;
-  k.t_s = t;
-  k.position = {x, y, z};
-  k.heading_deg = h;
-  k.pitch_deg = p;
-  k.roll_deg = r;
-  return k;
+  return PathKey{t, {x, y, z}, h, p, r};
 }
 
 PathSpec path_of(std::initializer_list<PathKey> keys) {

@@ -77,13 +77,19 @@ ig::terrain::Imagery paged_imagery(int dem_w, int dem_h, int step, std::shared_p
   return img;
 }
 
+// An fw x fh RGB8 image of random pixels.
+std::shared_ptr<std::vector<std::uint8_t>> random_rgb(int fw, int fh, unsigned seed) {
+  auto rgb = std::make_shared<std::vector<std::uint8_t>>(static_cast<std::size_t>(fw) * fh * 3);
+  std::mt19937 rng(seed);
+  for (auto& v : *rgb) v = std::uint8_t(rng());
+  return rgb;
+}
+
 TEST(ImageryWindowTexture, ToroidalUpdatesMatchAFullUpload) {
   const auto context = ig::gl::create_headless_context();
   constexpr int kDemW = 97, kDemH = 75, kStep = 2, kSize = 24;
   const int fw = kDemW * kStep, fh = kDemH * kStep;
-  auto rgb = std::make_shared<std::vector<std::uint8_t>>(static_cast<std::size_t>(fw) * fh * 3);
-  std::mt19937 rng(11);
-  for (auto& v : *rgb) v = std::uint8_t(rng());
+  const auto rgb = random_rgb(fw, fh, 11);
   // The full image in one texture, as the scene makes it when it fits.
   const std::vector<std::uint8_t> full_texels = upload_and_read(*rgb, fw, fh);
   // Tiles of 8 in a budget of what a 24-window needs: the path's jumps evict.
@@ -120,9 +126,7 @@ TEST(ImageryWindowTexture, AMoveWhoseTilesAreNotResidentIsHeldNotWaitedFor) {
   const auto context = ig::gl::create_headless_context();
   constexpr int kDemW = 97, kDemH = 75, kStep = 2, kSize = 24;
   const int fw = kDemW * kStep, fh = kDemH * kStep;
-  auto rgb = std::make_shared<std::vector<std::uint8_t>>(static_cast<std::size_t>(fw) * fh * 3);
-  std::mt19937 rng(5);
-  for (auto& v : *rgb) v = std::uint8_t(rng());
+  const auto rgb = random_rgb(fw, fh, 5);
   const std::vector<std::uint8_t> full_texels = upload_and_read(*rgb, fw, fh);
   auto gate = std::make_shared<Gate>();
   const ig::terrain::Imagery img =

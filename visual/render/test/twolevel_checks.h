@@ -47,13 +47,7 @@ inline RunOptions options(const std::string& method, int w, int h) {
 }
 
 inline PathKey key(double t, double x, double y, double z, double heading, double pitch, double roll = 0.0) {
-  PathKey k;
-  k.t_s = t;
-  k.position = {x, y, z};
-  k.heading_deg = heading;
-  k.pitch_deg = pitch;
-  k.roll_deg = roll;
-  return k;
+  return PathKey{t, {x, y, z}, heading, pitch, roll};
 }
 
 // The scenario with its path replaced: key k at t = k seconds, 1 s steps,

@@ -17,29 +17,28 @@ using namespace ray_cast_test;
 TEST(RayCast, RaysAlongGridLinesAndDiagonals) {
   const Heightfield hf = random_hf(33, 29, 10.0, 7.0, 17);
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(71);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(71);
   int hits = 0, n = 0;
   for (int k = 0; k < 3000; ++k) {
     // Line of vertices p(u) = base + u * step, u = 0..count-1.
     int bi = 0, bj = 0, si = 0, sj = 0, count = 0;
     const int kind = k % 3;
     if (kind == 0) {  // row j
-      bj = int(u01(rng) * hf.height), si = 1, count = hf.width;
+      bj = int(u01() * hf.height), si = 1, count = hf.width;
     } else if (kind == 1) {  // column i
-      bi = int(u01(rng) * hf.width), sj = 1, count = hf.height;
+      bi = int(u01() * hf.width), sj = 1, count = hf.height;
     } else {  // diagonal through (bi, 0) or (0, bj)
-      if (u01(rng) < 0.5) bi = int(u01(rng) * (hf.width - 1)); else bj = int(u01(rng) * (hf.height - 1));
+      if (u01() < 0.5) bi = int(u01() * (hf.width - 1)); else bj = int(u01() * (hf.height - 1));
       si = sj = 1;
       count = std::min(hf.width - bi, hf.height - bj);
     }
-    const bool reverse = u01(rng) < 0.5;
+    const bool reverse = u01() < 0.5;
     auto vertex_h = [&](int u) { return LD(hf.at(bi + u * si, bj + u * sj)); };
     const LD step_len = std::hypot(LD(si * hf.spacing_x_m), LD(sj * hf.spacing_y_m));
     // Ray in parameter u (may start before/after the line: outside the footprint).
-    const LD u0 = LD(-3 + (count + 5) * u01(rng));
-    const LD z0 = LD(hf.min_m - 20 + (hf.max_m - hf.min_m + 40) * u01(rng));
-    const LD dz_du = LD((u01(rng) - 0.5) * 2 * (u01(rng) < 0.3 ? 0.05 : 30.0));  // shallow or steep
+    const LD u0 = LD(-3 + (count + 5) * u01());
+    const LD z0 = LD(hf.min_m - 20 + (hf.max_m - hf.min_m + 40) * u01());
+    const LD dz_du = LD((u01() - 0.5) * 2 * (u01() < 0.3 ? 0.05 : 30.0));  // shallow or steep
     const LD du = reverse ? -1 : 1;
     const dvec3 o{double((bi + u0 * si) * hf.spacing_x_m), double((bj + u0 * sj) * hf.spacing_y_m), double(z0)};
     const dvec3 d{double(du * si * hf.spacing_x_m), double(du * sj * hf.spacing_y_m), double(du * dz_du)};
@@ -97,20 +96,19 @@ TEST(RayCast, RaysAlongGridLinesAndDiagonals) {
 TEST(RayCast, TraversalWorkIsBounded) {
   const Heightfield hf = random_hf(513, 385, 30.0, 30.0, 23);
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(91);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(91);
   const int levels = pyr.num_levels();
   for (dvec3 d : {dvec3{0, 0, -1}, dvec3{0, 0, 1}, dvec3{1, 0, -0.05}, dvec3{0, -1, -0.05}, dvec3{1, 0, 0},
                   dvec3{0.6, 0.8, -0.05}, dvec3{1, 1, -0.3}}) {
     long nodes = 0, cells = 0, worst_nodes = 0, worst_cells = 0;
     for (int k = 0; k < 300; ++k) {
       // On grid lines/corners half of the time (ties between siblings).
-      double x = hf.extent_x_m() * u01(rng), y = hf.extent_y_m() * u01(rng);
+      double x = hf.extent_x_m() * u01(), y = hf.extent_y_m() * u01();
       if (k % 2) {
         x = std::round(x / hf.spacing_x_m) * hf.spacing_x_m;
         y = std::round(y / hf.spacing_y_m) * hf.spacing_y_m;
       }
-      const dvec3 o{x, y, hf.max_m + 1 + 20 * u01(rng)};
+      const dvec3 o{x, y, hf.max_m + 1 + 20 * u01()};
       ig::terrain::RayCastStats stats;
       const auto h = cast_ray(hf, pyr, o, d, kInf, stats);
       const auto plain = cast_ray(hf, pyr, o, d);
@@ -138,20 +136,19 @@ TEST(RayCast, TraversalWorkIsBounded) {
 TEST(RayCast, RaysFromOutsideTheFootprint) {
   const Heightfield hf = random_hf(33, 33, 10.0, 10.0, 6);
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(41);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(41);
   Stats st;
   int hits = 0;
   for (int k = 0; k < 1500; ++k) {
     const double ex = hf.extent_x_m(), ey = hf.extent_y_m();
     // A point beyond one of the four sides, at or below terrain height.
-    const double s = u01(rng) * 4, along = u01(rng);
-    dvec3 o = s < 1   ? dvec3{-20 - 200 * u01(rng), along * ey, 0}
-              : s < 2 ? dvec3{ex + 20 + 200 * u01(rng), along * ey, 0}
-              : s < 3 ? dvec3{along * ex, -20 - 200 * u01(rng), 0}
-                      : dvec3{along * ex, ey + 20 + 200 * u01(rng), 0};
-    o.z = hf.min_m - 20 + (hf.max_m - hf.min_m + 60) * u01(rng);
-    const double x = ex * u01(rng), y = ey * u01(rng);
+    const double s = u01() * 4, along = u01();
+    dvec3 o = s < 1   ? dvec3{-20 - 200 * u01(), along * ey, 0}
+              : s < 2 ? dvec3{ex + 20 + 200 * u01(), along * ey, 0}
+              : s < 3 ? dvec3{along * ex, -20 - 200 * u01(), 0}
+                      : dvec3{along * ex, ey + 20 + 200 * u01(), 0};
+    o.z = hf.min_m - 20 + (hf.max_m - hf.min_m + 60) * u01();
+    const double x = ex * u01(), y = ey * u01();
     const dvec3 target{x, y, hf.sample_surface(x, y)};
     const dvec3 d = target - o;
     const auto h = cast_ray(hf, pyr, o, d);
@@ -171,14 +168,13 @@ TEST(RayCast, RaysFromOutsideTheFootprint) {
 TEST(RayCast, RaysFromBelowTheSurface) {
   const Heightfield hf = random_hf(33, 33, 10.0, 10.0, 7);
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(51);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(51);
   Stats st;
   for (int k = 0; k < 1500; ++k) {
-    const double x = hf.extent_x_m() * u01(rng), y = hf.extent_y_m() * u01(rng);
+    const double x = hf.extent_x_m() * u01(), y = hf.extent_y_m() * u01();
     const double surf = hf.sample_surface(x, y);
-    const dvec3 o{x, y, surf - 1e-3 - 30 * u01(rng)};
-    const double z = 2 * u01(rng) - 1, phi = 2 * M_PI * u01(rng), r = std::sqrt(1 - z * z);
+    const dvec3 o{x, y, surf - 1e-3 - 30 * u01()};
+    const double z = 2 * u01() - 1, phi = 2 * M_PI * u01(), r = std::sqrt(1 - z * z);
     const dvec3 d{r * std::cos(phi), r * std::sin(phi), z};
     check_ray(hf, brute_force(hf, o, d), cast_ray(hf, pyr, o, d), o, d, st, "below");
     // Straight up from below: the surface directly above.
@@ -192,12 +188,11 @@ TEST(RayCast, RaysFromBelowTheSurface) {
 TEST(RayCast, SkyRaysMiss) {
   const Heightfield hf = random_hf(65, 47, 10.0, 10.0, 8);
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(61);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(61);
   for (int k = 0; k < 2000; ++k) {
-    const dvec3 o{hf.extent_x_m() * (1.4 * u01(rng) - 0.2), hf.extent_y_m() * (1.4 * u01(rng) - 0.2),
-                  hf.max_m + 0.01 + 100 * u01(rng)};
-    const double elev = std::asin(1e-6 + (1 - 1e-6) * u01(rng)), az = 2 * M_PI * u01(rng);
+    const dvec3 o{hf.extent_x_m() * (1.4 * u01() - 0.2), hf.extent_y_m() * (1.4 * u01() - 0.2),
+                  hf.max_m + 0.01 + 100 * u01()};
+    const double elev = std::asin(1e-6 + (1 - 1e-6) * u01()), az = 2 * M_PI * u01();
     const dvec3 d{std::cos(az) * std::cos(elev), std::sin(az) * std::cos(elev), std::sin(elev)};
     EXPECT_FALSE(cast_ray(hf, pyr, o, d).has_value());
   }
@@ -216,14 +211,13 @@ TEST(RayCast, StartOnSurfaceAndMaxT) {
   // Origin on an edge, a diagonal or inside a cell, on the surface (to
   // rounding): t = 0 whatever the direction (documented), also for rays
   // leaving a convex ridge edge, which only touch the surface there.
-  std::mt19937_64 rng(101);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(101);
   for (int k = 0; k < 200; ++k) {
-    const int i = int(u01(rng) * 15), j = int(u01(rng) * 15);
-    const double fx = k % 3 == 0 ? 0.5 : u01(rng), fy = k % 3 == 1 ? 0.0 : (k % 3 == 2 ? fx : u01(rng));
+    const int i = int(u01() * 15), j = int(u01() * 15);
+    const double fx = k % 3 == 0 ? 0.5 : u01(), fy = k % 3 == 1 ? 0.0 : (k % 3 == 2 ? fx : u01());
     const double x = (i + fx) * 10.0, y = (j + fy) * 10.0;
     const dvec3 o{x, y, hf.sample_surface(x, y)};
-    const double z = 2 * u01(rng) - 1, phi = 2 * M_PI * u01(rng), r = std::sqrt(1 - z * z);
+    const double z = 2 * u01() - 1, phi = 2 * M_PI * u01(), r = std::sqrt(1 - z * z);
     const dvec3 d{r * std::cos(phi), r * std::sin(phi), z};
     const auto h = cast_ray(hf, pyr, o, d);
     ASSERT_TRUE(h.has_value()) << k;

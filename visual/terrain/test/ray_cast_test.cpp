@@ -36,13 +36,12 @@ TEST(RayCast, RandomRaysThinStrips) {
 TEST(RayCast, DistantOrigins) {
   const Heightfield hf = random_hf(33, 33, 30.0, 30.0, 22);
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(81);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(81);
   Stats st;
   for (int k = 0; k < 1000; ++k) {
-    const double dist = 20000 + 60000 * u01(rng), az = 2 * M_PI * u01(rng);
-    const dvec3 o{480 + dist * std::cos(az), 480 + dist * std::sin(az), hf.max_m + 3000 * u01(rng) * u01(rng)};
-    const double x = hf.extent_x_m() * u01(rng), y = hf.extent_y_m() * u01(rng);
+    const double dist = 20000 + 60000 * u01(), az = 2 * M_PI * u01();
+    const dvec3 o{480 + dist * std::cos(az), 480 + dist * std::sin(az), hf.max_m + 3000 * u01() * u01()};
+    const double x = hf.extent_x_m() * u01(), y = hf.extent_y_m() * u01();
     const dvec3 d = dvec3{x, y, hf.sample_surface(x, y)} - o;
     const auto h = cast_ray(hf, pyr, o, d);
     check_ray(hf, brute_force(hf, o, d), h, o, d, st, "distant");
@@ -55,11 +54,10 @@ TEST(RayCast, FlatTerrain) {
   const Heightfield hf = make_hf(20, 13, 4.0, 6.0, [](int, int) { return 10.f; });
   random_rays(hf, 2000, 15, "flat");
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(5);
   for (int k = 0; k < 500; ++k) {  // analytic: plane z = 10
-    const dvec3 o{80 * u01(rng) - 2, 80 * u01(rng) - 2, 10 + 50 * (u01(rng) - 0.3)};
-    const dvec3 d{u01(rng) - 0.5, u01(rng) - 0.5, u01(rng) - 0.5};
+    const dvec3 o{80 * u01() - 2, 80 * u01() - 2, 10 + 50 * (u01() - 0.3)};
+    const dvec3 d{u01() - 0.5, u01() - 0.5, u01() - 0.5};
     const dvec3 dn = glm::normalize(d);
     const double t = (10 - o.z) / dn.z;
     const dvec3 p = o + t * dn;
@@ -81,25 +79,24 @@ TEST(RayCast, FlatTerrain) {
 TEST(RayCast, GrazingRaysOverRidges) {
   const Heightfield hf = random_hf(65, 47, 10.0, 10.0, 4);
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(21);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(21);
   Stats st, st_dda;
   for (int k = 0; k < 2000; ++k) {
     // Prefer local maxima: best of a few random vertices in a neighbourhood.
-    int vi = 1 + int(u01(rng) * (hf.width - 2)), vj = 1 + int(u01(rng) * (hf.height - 2));
+    int vi = 1 + int(u01() * (hf.width - 2)), vj = 1 + int(u01() * (hf.height - 2));
     for (int m = 0; m < 8; ++m) {
-      const int ni = std::clamp(vi + int(u01(rng) * 5) - 2, 0, hf.width - 1);
-      const int nj = std::clamp(vj + int(u01(rng) * 5) - 2, 0, hf.height - 1);
+      const int ni = std::clamp(vi + int(u01() * 5) - 2, 0, hf.width - 1);
+      const int nj = std::clamp(vj + int(u01() * 5) - 2, 0, hf.height - 1);
       if (hf.at(ni, nj) > hf.at(vi, vj)) vi = ni, vj = nj;
     }
     const dvec3 v{vi * hf.spacing_x_m, vj * hf.spacing_y_m, hf.at(vi, vj)};
-    const double elev = std::exp(std::log(1e-4) + (std::log(1e-2) - std::log(1e-4)) * u01(rng)) *
-                        (u01(rng) < 0.5 ? -1 : 1);
-    const double az = 2 * M_PI * u01(rng);
+    const double elev = std::exp(std::log(1e-4) + (std::log(1e-2) - std::log(1e-4)) * u01()) *
+                        (u01() < 0.5 ? -1 : 1);
+    const double az = 2 * M_PI * u01();
     const dvec3 d{std::cos(az) * std::cos(elev), std::sin(az) * std::cos(elev), std::sin(elev)};
-    const double offset = std::exp(std::log(1e-7) + (std::log(1.0) - std::log(1e-7)) * u01(rng)) *
-                          (u01(rng) < 0.5 ? -1 : 1);
-    const dvec3 o = v - (50 + 400 * u01(rng)) * d + dvec3{0, 0, offset};
+    const double offset = std::exp(std::log(1e-7) + (std::log(1.0) - std::log(1e-7)) * u01()) *
+                          (u01() < 0.5 ? -1 : 1);
+    const dvec3 o = v - (50 + 400 * u01()) * d + dvec3{0, 0, offset};
     const RefHit ref = brute_force(hf, o, d);
     check_ray(hf, ref, cast_ray(hf, pyr, o, d), o, d, st, "grazing");
     check_ray(hf, ref, cast_ray_dda(hf, o, d), o, d, st_dda, "grazing (dda)");
@@ -115,28 +112,27 @@ void tilted_plane(double sx, double sy) {
   const Heightfield hf = make_hf(65, 65, sx, sy, [](int i, int j) { return float(0.5 * i + 0.25 * j); });
   const HeightPyramid pyr(hf);
   const LD a = LD(0.5) / sx, b = LD(0.25) / sy;  // dz/dx, dz/dy
-  std::mt19937_64 rng(31);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(31);
   const double ex = hf.extent_x_m(), ey = hf.extent_y_m();
   Stats st;
   int hits = 0;
   for (int k = 0; k < 1200; ++k) {
-    const double az = 2 * M_PI * u01(rng);
+    const double az = 2 * M_PI * u01();
     const double dx = std::cos(az), dy = std::sin(az);
     const double dz_par = double(a * dx + b * dy);  // exactly along the plane (to rounding)
     // Start at 10..90% of the footprint so hits are inside.
-    const double x = ex * (0.1 + 0.8 * u01(rng)), y = ey * (0.1 + 0.8 * u01(rng));
+    const double x = ex * (0.1 + 0.8 * u01()), y = ey * (0.1 + 0.8 * u01());
     const double surf = double(a * x + b * y);
     // Parallel rays: offsets 1e-9..1e-2 m. Near-parallel rays: angle to the
     // plane eps = 1e-8..1e-2 rad, offset = eps * (1..20 m). The hit t of a ray
     // at angle eps to a surface is only defined to ~1e-16 / eps relative in
     // double (normalising dir alone perturbs it that much), so smaller angles
     // cannot meet a 1e-6 tolerance.
-    const double t_want = 1 + 19 * u01(rng);
-    const double eps = std::exp(std::log(1e-8) + (std::log(1e-2) - std::log(1e-8)) * u01(rng));
-    const double offset = (k % 2 == 0 ? std::exp(std::log(1e-9) + (std::log(1e-2) - std::log(1e-9)) * u01(rng))
+    const double t_want = 1 + 19 * u01();
+    const double eps = std::exp(std::log(1e-8) + (std::log(1e-2) - std::log(1e-8)) * u01());
+    const double offset = (k % 2 == 0 ? std::exp(std::log(1e-9) + (std::log(1e-2) - std::log(1e-9)) * u01())
                                       : eps * t_want) *
-                          (u01(rng) < 0.5 ? -1 : 1);
+                          (u01() < 0.5 ? -1 : 1);
     const dvec3 o{x, y, surf + offset};
     // f(p) = a x + b y - z: positive below the plane.
     const LD f_o = a * LD(o.x) + b * LD(o.y) - LD(o.z);

@@ -31,6 +31,17 @@ using LD = long double;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Uniform numbers in [0, 1) from one seeded generator.
+class Uniform01 {
+ public:
+  explicit Uniform01(unsigned seed) : rng_(seed) {}
+  double operator()() { return dist_(rng_); }
+
+ private:
+  std::mt19937_64 rng_;
+  std::uniform_real_distribution<double> dist_{0.0, 1.0};
+};
+
 inline Heightfield make_hf(int w, int h, double sx, double sy, const std::function<float(int, int)>& f) {
   Heightfield hf;
   hf.width = w;
@@ -178,23 +189,22 @@ inline void expect_clean(const Stats& st, const char* what, int max_ambiguous = 
 // plus rays aimed at random surface points (so roughly half hit).
 inline void random_rays(const Heightfield& hf, int n, unsigned seed, const char* what) {
   const HeightPyramid pyr(hf);
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Uniform01 u01(seed);
   const double ex = hf.extent_x_m(), ey = hf.extent_y_m();
   Stats st, st_dda;
   for (int k = 0; k < n; ++k) {
-    dvec3 o{(-0.3 + 1.6 * u01(rng)) * ex, (-0.3 + 1.6 * u01(rng)) * ey,
-            hf.min_m - 30 + (hf.max_m - hf.min_m + 130) * u01(rng)};
+    dvec3 o{(-0.3 + 1.6 * u01()) * ex, (-0.3 + 1.6 * u01()) * ey,
+            hf.min_m - 30 + (hf.max_m - hf.min_m + 130) * u01()};
     dvec3 d;
     if (k % 2 == 0) {  // uniform direction
-      const double z = 2 * u01(rng) - 1, phi = 2 * M_PI * u01(rng), r = std::sqrt(1 - z * z);
+      const double z = 2 * u01() - 1, phi = 2 * M_PI * u01(), r = std::sqrt(1 - z * z);
       d = {r * std::cos(phi), r * std::sin(phi), z};
     } else {  // aimed at a random surface point, not normalised
-      const double x = ex * u01(rng), y = ey * u01(rng);
+      const double x = ex * u01(), y = ey * u01();
       d = dvec3{x, y, hf.sample_surface(x, y)} - o;
       if (glm::length(d) == 0) continue;
     }
-    const double max_t = (k % 7 == 3) ? glm::length(d) * u01(rng) * 2 : kInf;
+    const double max_t = (k % 7 == 3) ? glm::length(d) * u01() * 2 : kInf;
     const RefHit ref = brute_force(hf, o, d, max_t);
     check_ray(hf, ref, cast_ray(hf, pyr, o, d, max_t), o, d, st, what);
     check_ray(hf, ref, cast_ray_dda(hf, o, d, max_t), o, d, st_dda, what);
