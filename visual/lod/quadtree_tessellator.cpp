@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <string>
 
 namespace ig::lod {
@@ -43,7 +44,7 @@ void QuadtreeTessellator::evaluate(int k, int a, int b) {
                         nodes_.hi[n]);
     if (!(*in_view_)(lo - eye_, hi - eye_)) return;
   }
-  ++stats_.evaluated;
+  ++sel_.stats.evaluated;
   const glm::dvec3 centre = glm::dvec3(ci * sx, cj * sy, heights_(ci, cj)) - eye_;
   const double L = std::sqrt(centre.x * centre.x + centre.y * centre.y + centre.z * centre.z);
   const double d = 2.0 * h * std::max(sx, sy);
@@ -52,7 +53,7 @@ void QuadtreeTessellator::evaluate(int k, int a, int b) {
   if (!(L < d * c1_ * std::max(c2_ * nodes_.roughness[n] * inv_spacing_, 1.0))) return;
   split_[n] = 1;
   split_list_.push_back({k, a, b});
-  ++stats_.splits;
+  ++sel_.stats.splits;
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) evaluate(k - 1, 2 * a + dx, 2 * b + dy);
 }
@@ -63,7 +64,7 @@ void QuadtreeTessellator::force_split(int k, int a, int b) {
   if (k + 1 < nodes_.levels) force_split(k + 1, a / 2, b / 2);  // the node must exist first
   split_[n] = 1;
   split_list_.push_back({k, a, b});
-  ++stats_.forced_splits;
+  ++sel_.stats.forced_splits;
 }
 
 void QuadtreeTessellator::restrict_levels() {
@@ -100,10 +101,10 @@ void QuadtreeTessellator::emit_leaf(int k, int a, int b) {
   const glm::dvec3 lo(x0 * sx, y0 * sy, nodes_.lo[n]);
   const glm::dvec3 hi(std::min(x1, g.lim_x) * sx, std::min(y1, g.lim_y) * sy, nodes_.hi[n]);
   if (*in_view_ && !(*in_view_)(lo - eye_, hi - eye_)) {
-    ++stats_.culled;
+    ++sel_.stats.culled;
     return;
   }
-  ++stats_.leaves;
+  ++sel_.stats.leaves;
 
   // Keep an edge midpoint unless the neighbour across that edge is coarser.
   auto keep = [&](int na, int nb) {
@@ -154,7 +155,7 @@ void QuadtreeTessellator::emit_leaf(int k, int a, int b) {
     if (*in_view_ && !(*in_view_)(tlo - eye_, thi - eye_)) continue;
     ratio = std::max(ratio, fan + ratio_at(dev * scale, tlo, thi));
   }
-  stats_.max_error_ratio = std::max(stats_.max_error_ratio, ratio);
+  sel_.stats.max_error_ratio = std::max(sel_.stats.max_error_ratio, ratio);
 
   const glm::ivec2 c(ci, cj);
   glm::ivec2 prev = ring[0];
@@ -163,23 +164,23 @@ void QuadtreeTessellator::emit_leaf(int k, int a, int b) {
     if (!kept[r]) continue;
     const glm::ivec2 next = ring[r];
     if (!crossing) {
-      out_.emplace_back(c.x, c.y);
-      out_.emplace_back(prev.x, prev.y);
-      out_.emplace_back(next.x, next.y);
-      ++stats_.triangles;
+      sel_.vertices.emplace_back(c.x, c.y);
+      sel_.vertices.emplace_back(prev.x, prev.y);
+      sel_.vertices.emplace_back(next.x, next.y);
+      ++sel_.stats.triangles;
     } else {
       glm::ivec2 clipped[3][3];
       const int count = clip_to_dem(c, prev, next, g.lim_x, g.lim_y, clipped);
       for (int t = 0; t < count; ++t)
-        for (const auto& p : clipped[t]) out_.emplace_back(p.x, p.y);
-      stats_.triangles += count;
+        for (const auto& p : clipped[t]) sel_.vertices.emplace_back(p.x, p.y);
+      sel_.stats.triangles += count;
     }
     prev = next;
   }
 }
 
-void QuadtreeTessellator::update(const glm::dvec3& eye, double c1, double c2, const BoxInView& in_view,
-                                 double min_distance_m) {
+QuadtreeSelection QuadtreeTessellator::select(const glm::dvec3& eye, double c1, double c2, const BoxInView& in_view,
+                                              double min_distance_m, QuadtreeSelection recycled) {
   if (!(c1 > 0.0) || !std::isfinite(c1) || !(c2 >= 0.0) || !std::isfinite(c2) || !(min_distance_m > 0.0) ||
       !std::isfinite(eye.x + eye.y + eye.z))
     throw std::invalid_argument(
@@ -187,8 +188,9 @@ void QuadtreeTessellator::update(const glm::dvec3& eye, double c1, double c2, co
   min_distance_ = min_distance_m;
   for (const NodeRef& r : split_list_) split_[nodes_.index(r.k, r.a, r.b)] = 0;
   split_list_.clear();
-  out_.clear();
-  stats_ = {};
+  sel_ = std::move(recycled);
+  sel_.vertices.clear();
+  sel_.stats = {};
   eye_ = eye;
   c1_ = c1;
   c2_ = c2;
@@ -200,6 +202,7 @@ void QuadtreeTessellator::update(const glm::dvec3& eye, double c1, double c2, co
   for (int b = 0; b < nodes_.ny[root]; ++b)
     for (int a = 0; a < nodes_.nx[root]; ++a) emit(root, a, b);
   in_view_ = nullptr;
+  return std::move(sel_);
 }
 
 int QuadtreeTessellator::leaf_level(int cx, int cy) const {

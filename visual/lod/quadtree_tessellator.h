@@ -48,23 +48,28 @@ struct QuadtreeFrameStats {
   double max_error_ratio = 0.0;  // largest error / distance (radians) over drawn leaves
 };
 
+// One frame's mesh, as a value the renderer consumes.
+struct QuadtreeSelection {
+  std::vector<glm::u16vec2> vertices;  // triangles as DEM sample indices, 3 per triangle
+  QuadtreeFrameStats stats;
+};
+
 class QuadtreeTessellator {
  public:
   // Throws std::invalid_argument for grids smaller than 2 x 2 or wider or
   // taller than 65536 samples (vertices are 16-bit sample indices).
   explicit QuadtreeTessellator(const terrain::Heightfield& hf);
 
-  // Rebuilds the mesh for an eye at `eye` (terrain-local metres). Distances
+  // Builds the mesh for an eye at `eye` (terrain-local metres). Distances
   // below min_distance_m (the near plane) count as that in the error bound.
-  // Throws std::invalid_argument unless c1 > 0 and c2 >= 0 (finite).
-  void update(const glm::dvec3& eye, double c1, double c2, const BoxInView& in_view = {},
-              double min_distance_m = 0.5);
+  // `recycled` (last frame's selection) lends its memory. Throws
+  // std::invalid_argument unless c1 > 0 and c2 >= 0 (finite).
+  QuadtreeSelection select(const glm::dvec3& eye, double c1, double c2, const BoxInView& in_view = {},
+                           double min_distance_m = 0.5, QuadtreeSelection recycled = {});
 
-  const std::vector<glm::u16vec2>& vertices() const { return out_; }
-  const QuadtreeFrameStats& stats() const { return stats_; }
   const QuadtreeNodes& nodes() const { return nodes_; }
   double build_ms() const { return build_ms_; }
-  // Level of the leaf covering cell (cx, cy) after the last update (0 =
+  // Level of the leaf covering cell (cx, cy) after the last select (0 =
   // finest, 3 x 3 samples), or -1 outside the patch grid. For tests.
   int leaf_level(int cx, int cy) const;
 
@@ -92,8 +97,7 @@ class QuadtreeTessellator {
   const BoxInView* in_view_ = nullptr;
   std::vector<std::uint8_t> split_;  // per node
   std::vector<NodeRef> split_list_;  // the split nodes (worklist of the restriction; cleared next frame)
-  std::vector<glm::u16vec2> out_;
-  QuadtreeFrameStats stats_;
+  QuadtreeSelection sel_;  // handed out at the end of select
 };
 
 }  // namespace ig::lod

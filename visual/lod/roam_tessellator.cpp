@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace ig::lod {
 
@@ -63,8 +64,8 @@ void RoamTessellator::split(int x, bool forced) {
   bintree::split(
       tris_, x, forced,
       [this](bool f) {
-        ++stats_.splits;
-        if (f) ++stats_.forced_splits;
+        ++sel_.stats.splits;
+        if (f) ++sel_.stats.forced_splits;
       },
       [](int, int) {}, [](int, int) {});
 }
@@ -97,26 +98,26 @@ void RoamTessellator::emit(int id) {
   if (!grid_.overlaps_dem(mn.x, mn.y)) return;
   if (t.ratio == kUnknown) evaluate(t);
   if (t.ratio == kCulled) {
-    ++stats_.culled;
+    ++sel_.stats.culled;
     return;
   }
-  stats_.max_error_ratio = std::max(stats_.max_error_ratio, double(t.ratio));
+  sel_.stats.max_error_ratio = std::max(sel_.stats.max_error_ratio, double(t.ratio));
   if (!grid_.crosses_edge(mx.x, mx.y)) {
-    out_.push_back(t.v[0]);
-    out_.push_back(t.v[1]);
-    out_.push_back(t.v[2]);
-    ++stats_.triangles;
+    sel_.vertices.push_back(t.v[0]);
+    sel_.vertices.push_back(t.v[1]);
+    sel_.vertices.push_back(t.v[2]);
+    ++sel_.stats.triangles;
     return;
   }
   glm::ivec2 clipped[3][3];
   const int n = clip_to_dem(a, b, c, grid_.lim_x, grid_.lim_y, clipped);
   for (int k = 0; k < n; ++k)
-    for (const auto& p : clipped[k]) out_.emplace_back(p.x, p.y);
-  stats_.triangles += n;
+    for (const auto& p : clipped[k]) sel_.vertices.emplace_back(p.x, p.y);
+  sel_.stats.triangles += n;
 }
 
-void RoamTessellator::update(const glm::dvec3& eye, double tau_px, double pixels_per_radian, const BoxInView& in_view,
-                             double min_distance_m) {
+RoamSelection RoamTessellator::select(const glm::dvec3& eye, double tau_px, double pixels_per_radian,
+                                     const BoxInView& in_view, double min_distance_m, RoamSelection recycled) {
   if (!(tau_px >= 0.0) || !std::isfinite(tau_px) || !(pixels_per_radian > 0.0) || !std::isfinite(pixels_per_radian) ||
       !(min_distance_m > 0.0) || !std::isfinite(eye.x + eye.y + eye.z))
     throw std::invalid_argument(
@@ -125,9 +126,10 @@ void RoamTessellator::update(const glm::dvec3& eye, double tau_px, double pixels
   min_distance_ = min_distance_m;
   threshold_ = tau_px / pixels_per_radian;
   in_view_ = &in_view;
-  stats_ = {};
   tris_.clear();
-  out_.clear();
+  sel_ = std::move(recycled);
+  sel_.vertices.clear();
+  sel_.stats = {};
 
   // Roots: per patch (x0,y0)-(x1,y1), root 0 = (SE, NE, SW) (left edge east,
   // right edge south), root 1 = (NW, SW, NE) (left edge west, right edge
@@ -154,8 +156,9 @@ void RoamTessellator::update(const glm::dvec3& eye, double tau_px, double pixels
   // The leaves, in the order they were made: a linear pass over the pool.
   for (int id = 0; id < int(tris_.size()); ++id)
     if (tris_[id].child < 0) emit(id);
-  stats_.nodes = (long long)tris_.size();
+  sel_.stats.nodes = (long long)tris_.size();
   in_view_ = nullptr;
+  return std::move(sel_);
 }
 
 }  // namespace ig::lod

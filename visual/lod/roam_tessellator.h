@@ -45,6 +45,12 @@ struct RoamFrameStats {
   double max_error_ratio = 0.0;
 };
 
+// One frame's mesh, as a value the renderer consumes.
+struct RoamSelection {
+  std::vector<glm::u16vec2> vertices;  // triangles as DEM sample indices, 3 per triangle
+  RoamFrameStats stats;
+};
+
 class RoamTessellator {
  public:
   // Throws std::invalid_argument for grids smaller than 2 x 2 or wider or
@@ -54,14 +60,13 @@ class RoamTessellator {
   // hypotenuse), else flat ground would never refine.
   explicit RoamTessellator(const terrain::Heightfield& hf, double earth_radius_m = 0.0);
 
-  // Rebuilds the mesh for an eye at `eye` (terrain-local metres). tau_px >= 0.
+  // Builds the mesh for an eye at `eye` (terrain-local metres). tau_px >= 0.
   // Distances below min_distance_m (the near plane) count as that, so the
-  // bound stays finite with the eye inside a triangle's box.
-  void update(const glm::dvec3& eye, double tau_px, double pixels_per_radian, const BoxInView& in_view = {},
-              double min_distance_m = 0.5);
+  // bound stays finite with the eye inside a triangle's box. `recycled`
+  // (last frame's selection) lends its memory.
+  RoamSelection select(const glm::dvec3& eye, double tau_px, double pixels_per_radian, const BoxInView& in_view = {},
+                       double min_distance_m = 0.5, RoamSelection recycled = {});
 
-  const std::vector<glm::u16vec2>& vertices() const { return out_; }
-  const RoamFrameStats& stats() const { return stats_; }
   const PatchGrid& grid() const { return grid_; }
   const RoamWedgieGrid& wedgies() const { return wedgies_; }
   double build_ms() const { return build_ms_; }
@@ -88,15 +93,14 @@ class RoamTessellator {
   RoamWedgieGrid wedgies_;
   double build_ms_ = 0.0;
 
-  // Per frame.
+  // Per frame (sel_ is handed out at the end of select).
   glm::dvec3 eye_{0.0};
   double threshold_ = 0.0;  // split when ratio > threshold_ (= tau / pixels per radian)
   double min_distance_ = 0.5;
   double earth_radius_m_ = 0.0;
   const BoxInView* in_view_ = nullptr;
   std::vector<Tri> tris_;
-  std::vector<glm::u16vec2> out_;
-  RoamFrameStats stats_;
+  RoamSelection sel_;
 };
 
 }  // namespace ig::lod

@@ -23,6 +23,7 @@
 #include "lod/level1_size_controller.h"
 #include "lod/look_at_point.h"
 #include "lod/roam_level0_mesh.h"
+#include "lod/scene_requests.h"
 #include "options/twolevel_options.h"
 #include "terrain/height_pyramid.h"
 #include "terrain/heightfield.h"
@@ -55,16 +56,6 @@ struct Level1Paging {
   std::function<bool(glm::ivec2 lo, glm::ivec2 hi, glm::ivec2 window_centre)> ready;
 };
 
-// What the frame asks of the scene, in order: tiles to prefetch (around
-// points in metres, sample rectangles inclusive) and where the height
-// window goes.
-struct TwoLevelSceneRequests {
-  std::vector<glm::dvec3> points_m;
-  std::vector<std::pair<glm::ivec2, glm::ivec2>> sample_rects;  // before the window follows
-  glm::ivec2 window_centre{0};
-  std::pair<glm::ivec2, glm::ivec2> square_and_band{glm::ivec2(0), glm::ivec2(-1)};  // after it
-};
-
 struct TwoLevelSelection {
   LookAtPoint look_at;
   glm::ivec2 origin{0};  // Level1's lower-left sample
@@ -83,7 +74,7 @@ struct TwoLevelSelection {
   // Per wall vertex along level1_perimeter(n), top and bottom: (1, height);
   // filled when blocks are visible.
   std::vector<glm::vec2> wall_z;
-  TwoLevelSceneRequests scene_requests;
+  SceneRequests scene_requests;  // window_set left -1: the method owns its windows
 };
 
 // Level1's edge samples relative to its origin, once around (the walls' order).

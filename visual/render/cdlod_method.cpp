@@ -44,7 +44,10 @@ std::vector<std::string> CdlodMethod::column_names() const {
   return {"nodes_drawn", "quarters_drawn", "lod_min", "lod_max"};
 }
 
-void CdlodMethod::update(const Camera& camera) { areas_ = select(camera); }
+lod::SceneRequests CdlodMethod::update(const Camera& camera) {
+  areas_ = select(camera);
+  return {};
+}
 
 std::vector<lod::CdlodArea> CdlodMethod::select(const Camera& camera) const {
   const Frustum frustum = frustum_of(camera);

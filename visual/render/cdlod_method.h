@@ -36,7 +36,7 @@ class CdlodMethod final : public TerrainMethod {
 
   std::string name() const override { return "cdlod"; }
   std::vector<std::string> column_names() const override;
-  void update(const Camera& camera) override;
+  lod::SceneRequests update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   std::optional<ErrorKnob> knob() const override { return ErrorKnob{"lod0_range", "samples", lod0_range_}; }
   // Max over drawn pieces and over the LODs their points can show (LOD k

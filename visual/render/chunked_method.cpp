@@ -81,7 +81,10 @@ void select_from(const lod::ChunkQuadtree& tree, int k, const Camera& camera, co
 }
 }  // namespace
 
-void ChunkedMethod::update(const Camera& camera) { drawn_ = select(camera); }
+lod::SceneRequests ChunkedMethod::update(const Camera& camera) {
+  drawn_ = select(camera);
+  return {};
+}
 
 std::vector<ChunkedMethod::DrawnChunk> ChunkedMethod::select(const Camera& camera) const {
   std::vector<DrawnChunk> drawn;

@@ -35,7 +35,7 @@ class ChunkedMethod final : public TauMethod {
 
   std::string name() const override { return "chunked"; }
   std::vector<std::string> column_names() const override;
-  void update(const Camera& camera) override;
+  lod::SceneRequests update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   // Max over drawn chunks of (the chunk mesh's own measured error) /
   // max(D, near), in pixels; skirts hang below the surface and add none.

@@ -21,7 +21,7 @@ std::vector<std::string> pass_names_of(const TerrainMethod& method) {
 }
 }  // namespace
 
-FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
+FrameRenderer::FrameRenderer(TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
     : scene_(scene),
       method_(&method),
       sky_(shader_dir),
@@ -48,7 +48,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
   const gl::WorkTally at_start = gl::work_tally();
   method_->set_viewport(target.width(), target.height());
   auto t0 = Clock::now();
-  method_->update(camera);
+  scene_.apply(method_->update(camera));
   r.timings.lod_ms = ms_since(t0);
 
   t0 = Clock::now();

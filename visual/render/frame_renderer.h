@@ -1,8 +1,9 @@
 #pragma once
-// One view of one frame: LOD update, the method's terrain passes, then the
-// sky into whatever the terrain left uncovered, then the anti-aliasing
-// resolve (multisampled) or post pass (post-filtered). Each stage is timed on the
-// wall clock and closed with gl::finish (GL timer queries are not real GPU
+// One view of one frame: LOD update, the scene step (what the update asked
+// of the scene: prefetches, the height window's move; timed with the update),
+// the method's terrain passes, then the sky into whatever the terrain left
+// uncovered, then the anti-aliasing resolve (multisampled) or post pass
+// (post-filtered). Each stage is timed on the wall clock and closed with gl::finish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
 
 #include "gl/post_filter_pass.h"
@@ -32,7 +33,7 @@ struct ViewResult {
 
 class FrameRenderer {
  public:
-  FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
+  FrameRenderer(TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
   ~FrameRenderer();
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
@@ -49,7 +50,7 @@ class FrameRenderer {
   void set_method(TerrainMethod& method);
 
  private:
-  const TerrainScene& scene_;
+  TerrainScene& scene_;
   TerrainMethod* method_;
   gl::SkyPass sky_;
   gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)

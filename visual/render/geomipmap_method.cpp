@@ -47,7 +47,10 @@ std::vector<std::string> GeoMipMapMethod::column_names() const {
   return {"blocks_drawn", "blocks_stitched", "level_min", "level_max", "level_mean"};
 }
 
-void GeoMipMapMethod::update(const Camera& camera) { selection_ = select(camera); }
+lod::SceneRequests GeoMipMapMethod::update(const Camera& camera) {
+  selection_ = select(camera);
+  return {};
+}
 
 GeoMipMapMethod::Selection GeoMipMapMethod::select(const Camera& camera) const {
   const auto& hf = scene_.heightfield();

@@ -30,7 +30,7 @@ class GeoMipMapMethod final : public TauMethod {
 
   std::string name() const override { return "geomipmap"; }
   std::vector<std::string> column_names() const override;
-  void update(const Camera& camera) override;
+  lod::SceneRequests update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   // Max over the pieces of the drawn blocks of (error of the triangles
   // drawn) / max(distance to the piece, near), in pixels. The pieces: the

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace ig::render {
 
@@ -19,16 +20,18 @@ std::vector<std::string> QuadtreeMethod::column_names() const {
   return {"nodes_evaluated", "splits", "forced_splits", "leaves", "culled_leaves"};
 }
 
-void QuadtreeMethod::update(const Camera& camera) {
+lod::SceneRequests QuadtreeMethod::update(const Camera& camera) {
   const auto t0 = std::chrono::steady_clock::now();
   frustum_ = frustum_of(camera);
-  tess_.update(camera.position, options_.c1, options_.c2, in_view_, std::max(camera.near_m, 1e-3));
+  selection_ = tess_.select(camera.position, options_.c1, options_.c2, in_view_, std::max(camera.near_m, 1e-3),
+                            std::move(selection_));
   update_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return {};
 }
 
 MethodFrameStats QuadtreeMethod::draw(const Camera& camera, const gl::RenderTarget&) {
-  const auto& s = tess_.stats();
-  return stream_.draw_frame(tess_.vertices(), scene_, camera, s.triangles,
+  const auto& s = selection_.stats;
+  return stream_.draw_frame(selection_.vertices, scene_, camera, s.triangles,
                             {{"nodes_evaluated", double(s.evaluated)},
                              {"splits", double(s.splits)},
                              {"forced_splits", double(s.forced_splits)},
@@ -37,7 +40,7 @@ MethodFrameStats QuadtreeMethod::draw(const Camera& camera, const gl::RenderTarg
 }
 
 std::optional<double> QuadtreeMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
-  return tess_.stats().max_error_ratio * pixels_per_radian(camera, viewport_height_px);
+  return selection_.stats.max_error_ratio * pixels_per_radian(camera, viewport_height_px);
 }
 
 }  // namespace ig::render

@@ -24,7 +24,7 @@ class QuadtreeMethod final : public TerrainMethod {
   QuadtreeMethod(const TerrainScene& scene, const std::string& shader_dir, QuadtreeOptions options = {});
   std::string name() const override { return "quadtree"; }
   std::vector<std::string> column_names() const override;
-  void update(const Camera& camera) override;
+  lod::SceneRequests update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   std::optional<ErrorKnob> knob() const override { return ErrorKnob{"C1", "", options_.c1}; }
   // Largest (fan error incl. dropped midpoints / distance to the leaf's box)
@@ -32,12 +32,14 @@ class QuadtreeMethod final : public TerrainMethod {
   std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
 
   const lod::QuadtreeTessellator& tessellator() const { return tess_; }
+  const lod::QuadtreeSelection& selection() const { return selection_; }
   double last_update_ms() const { return update_ms_; }
 
  private:
   const TerrainScene& scene_;
   QuadtreeOptions options_;
   lod::QuadtreeTessellator tess_;
+  lod::QuadtreeSelection selection_;  // update() -> draw()
   SampleTriangleStream stream_;
   Frustum frustum_{};
   lod::BoxInView in_view_;

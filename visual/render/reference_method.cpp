@@ -37,7 +37,10 @@ ReferenceMethod::Selection ReferenceMethod::select(const Camera& camera) const {
   return sel;
 }
 
-void ReferenceMethod::update(const Camera& camera) { selection_ = select(camera); }
+lod::SceneRequests ReferenceMethod::update(const Camera& camera) {
+  selection_ = select(camera);
+  return {};
+}
 
 MethodFrameStats ReferenceMethod::draw(const Camera& camera, const gl::RenderTarget&) {
   const auto& hf = scene_.heightfield();

@@ -16,7 +16,7 @@ class ReferenceMethod final : public TerrainMethod {
   ReferenceMethod(const TerrainScene& scene, const std::string& shader_dir, int chunk_quads = 64);
   std::string name() const override { return "reference"; }
   std::vector<std::string> column_names() const override { return {"chunks_drawn", "chunks_total"}; }
-  void update(const Camera& camera) override;
+  lod::SceneRequests update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   // Every DEM sample is a vertex: no geometric error by construction.
   std::optional<double> error_bound_px(const Camera&, int) const override { return 0.0; }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace ig::render {
 
@@ -24,17 +25,18 @@ void RoamMethod::set_viewport(int, int height_px) {
   if (height_px > 0) options_.viewport_height_px = height_px;
 }
 
-void RoamMethod::update(const Camera& camera) {
+lod::SceneRequests RoamMethod::update(const Camera& camera) {
   const auto t0 = std::chrono::steady_clock::now();
   frustum_ = frustum_of(camera);
-  tess_.update(camera.position, options_.tau_px, pixels_per_radian(camera, options_.viewport_height_px), in_view_,
-               std::max(camera.near_m, 1e-3));
+  selection_ = tess_.select(camera.position, options_.tau_px, pixels_per_radian(camera, options_.viewport_height_px),
+                            in_view_, std::max(camera.near_m, 1e-3), std::move(selection_));
   update_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return {};
 }
 
 MethodFrameStats RoamMethod::draw(const Camera& camera, const gl::RenderTarget&) {
-  const auto& s = tess_.stats();
-  return stream_.draw_frame(tess_.vertices(), scene_, camera, s.triangles,
+  const auto& s = selection_.stats;
+  return stream_.draw_frame(selection_.vertices, scene_, camera, s.triangles,
                             {{"splits", double(s.splits)},
                              {"forced_splits", double(s.forced_splits)},
                              {"bintree_nodes", double(s.nodes)},
@@ -42,7 +44,7 @@ MethodFrameStats RoamMethod::draw(const Camera& camera, const gl::RenderTarget&)
 }
 
 std::optional<double> RoamMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {
-  return tess_.stats().max_error_ratio * pixels_per_radian(camera, viewport_height_px);
+  return selection_.stats.max_error_ratio * pixels_per_radian(camera, viewport_height_px);
 }
 
 }  // namespace ig::render

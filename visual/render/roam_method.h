@@ -24,7 +24,7 @@ class RoamMethod final : public TerrainMethod {
   std::string name() const override { return "roam"; }
   std::vector<std::string> column_names() const override;
   void set_viewport(int width_px, int height_px) override;
-  void update(const Camera& camera) override;
+  lod::SceneRequests update(const Camera& camera) override;
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   std::optional<ErrorKnob> knob() const override { return ErrorKnob{"tau_px", "px", options_.tau_px}; }
   // Largest (wedgie / distance to the triangle's box) over the triangles of
@@ -32,12 +32,14 @@ class RoamMethod final : public TerrainMethod {
   std::optional<double> error_bound_px(const Camera& camera, int viewport_height_px) const override;
 
   const lod::RoamTessellator& tessellator() const { return tess_; }
+  const lod::RoamSelection& selection() const { return selection_; }
   double last_update_ms() const { return update_ms_; }
 
  private:
   const TerrainScene& scene_;
   RoamOptions options_;
   lod::RoamTessellator tess_;
+  lod::RoamSelection selection_;  // update() -> draw()
   SampleTriangleStream stream_;
   Frustum frustum_{};
   lod::BoxInView in_view_;

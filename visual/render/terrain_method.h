@@ -13,6 +13,7 @@
 
 #include "gl/render_target.h"
 #include "gl/work_counters.h"
+#include "lod/scene_requests.h"
 #include "options/method_options.h"
 #include "options/twolevel_options.h"
 #include "render/camera.h"
@@ -61,8 +62,10 @@ class TerrainMethod {
     (void)width_px;
     (void)height_px;
   }
-  // CPU-side LOD selection for this camera.
-  virtual void update(const Camera& camera) = 0;
+  // CPU-side LOD selection for this camera. Returns what the frame needs of
+  // the scene (tiles, a window's place; empty for most methods), which the
+  // frame's scene step (TerrainScene::apply) carries out before draw().
+  virtual lod::SceneRequests update(const Camera& camera) = 0;
   // Draw into the target, which the caller has bound and cleared with
   // reversed-Z depth set up. A method with offscreen passes rebinds it after.
   virtual MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) = 0;

@@ -233,6 +233,14 @@ void TerrainScene::prefetch_samples(glm::ivec2 lo, glm::ivec2 hi) {
   cache.request(lo.x - t, lo.y - t, hi.x - lo.x + 1 + 2 * t, hi.y - lo.y + 1 + 2 * t);
 }
 
+void TerrainScene::apply(const lod::SceneRequests& requests) {
+  for (const auto& [lo, hi] : requests.sample_rects) prefetch_samples(lo, hi);
+  if (!requests.points_m.empty()) prefetch_heights(requests.points_m);
+  if (requests.window_set >= 0) follow_window(requests.window_set, requests.window_centre);
+  const auto& [lo, hi] = requests.square_and_band;
+  if (lo.x <= hi.x && lo.y <= hi.y) prefetch_samples(lo, hi);
+}
+
 bool TerrainScene::samples_resident(glm::ivec2 lo, glm::ivec2 hi) const {
   if (!heightfield_.paged) return true;
   return heightfield_.paged->cache->resident_rect(lo.x, lo.y, hi.x - lo.x + 1, hi.y - lo.y + 1);

@@ -29,6 +29,7 @@
 #include "environment/sky_light.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
+#include "lod/scene_requests.h"
 #include "options/shading_options.h"
 #include "render/height_window_texture.h"
 #include "render/imagery_window_texture.h"
@@ -146,6 +147,10 @@ class TerrainScene {
   void prefetch_heights(const std::vector<glm::dvec3>& points_m);
   // The same for samples [lo, hi] (inclusive) and one tile around them.
   void prefetch_samples(glm::ivec2 lo, glm::ivec2 hi);
+  // The frame's scene step: carries out what a method's update() asked
+  // (lod/scene_requests.h) in its order: prefetches, then the window follows
+  // (uploading what scrolled in), then the prefetch around square_and_band.
+  void apply(const lod::SceneRequests& requests);
   // Paged heights: whether a frame may wait for tiles (a deterministic
   // replay) or must not (live: Level1 keeps its square until they are in;
   // render/twolevel_method.cpp). Default false.

@@ -54,7 +54,7 @@ std::vector<std::string> TwoLevelMethod::column_names() const {
           "level0_hidden_clusters", "level1_hidden_blocks", "level1_held", "level1_far"};
 }
 
-void TwoLevelMethod::update(const Camera& camera) {
+lod::SceneRequests TwoLevelMethod::update(const Camera& camera) {
   const Frustum frustum = frustum_of(camera);
   lod::TwoLevelView view;
   view.position = camera.position;
@@ -79,15 +79,9 @@ void TwoLevelMethod::update(const Camera& camera) {
     return scene_.samples_resident(lo, hi) && scene_.window_ready(windows_, window_centre);
   };
   const double ratio = passes_->read_previous_ratio();
-  const auto& sel = selector_->select(view, ratio, paging);
-  apply_scene_requests(sel.scene_requests);
-}
-
-void TwoLevelMethod::apply_scene_requests(const lod::TwoLevelSceneRequests& requests) {
-  for (const auto& [lo, hi] : requests.sample_rects) scene_.prefetch_samples(lo, hi);
-  if (!requests.points_m.empty()) scene_.prefetch_heights(requests.points_m);
-  scene_.follow_window(windows_, requests.window_centre);  // the height window, if any, on Level1 (terrain_scene.h)
-  scene_.prefetch_samples(requests.square_and_band.first, requests.square_and_band.second);
+  lod::SceneRequests requests = selector_->select(view, ratio, paging).scene_requests;
+  requests.window_set = windows_;  // this channel's height window follows Level1
+  return requests;
 }
 
 MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarget& target) {

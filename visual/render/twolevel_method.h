@@ -37,7 +37,7 @@ class TwoLevelMethod final : public TerrainMethod {
   std::string name() const override { return "twolevel"; }
   std::vector<std::string> column_names() const override;
   std::vector<std::string> pass_names() const override;
-  void update(const Camera& camera) override;
+  lod::SceneRequests update(const Camera& camera) override;
   void set_viewport(int width_px, int height_px) override { viewport_ = {width_px, height_px}; }
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;
   std::optional<ErrorKnob> knob() const override {
@@ -80,7 +80,6 @@ class TwoLevelMethod final : public TerrainMethod {
  private:
   // The scene's side of the frame: tiles the selection asks for, the
   // height window on Level1.
-  void apply_scene_requests(const lod::TwoLevelSceneRequests& requests);
 
   TerrainScene& scene_;  // its windows follow Level1; tiles are asked for
   int windows_ = -1;  // the scene's window set this method keeps on its Level1 (TerrainScene::claim_windows)

@@ -140,20 +140,20 @@ inline double worst_deviation_ratio(const ig::terrain::Heightfield& hf, const st
   return worst;
 }
 
-// For each DEM, eye (eyes_for) and knob, after update(tessellator, eye, knob)
-// the tessellator's claimed max_error_ratio covers every output triangle's
-// deviation ratio.
-template <class Tessellator, class Update>
+// For each DEM, eye (eyes_for) and knob, the selection select(tessellator,
+// eye, knob) returns claims a max_error_ratio that covers every output
+// triangle's deviation ratio.
+template <class Tessellator, class Select>
 void expect_bound_covers_every_output_point(const std::vector<ig::terrain::Heightfield>& dems,
                                             std::initializer_list<double> knobs, const std::string& knob_label,
-                                            Update update) {
+                                            Select select) {
   for (const auto& hf : dems) {
     Tessellator t(hf);
     for (const auto& eye : eyes_for(hf))
       for (double knob : knobs) {
-        update(t, eye, knob);
-        const double worst = worst_deviation_ratio(hf, t.vertices(), eye);
-        const double claimed = t.stats().max_error_ratio;
+        const auto sel = select(t, eye, knob);
+        const double worst = worst_deviation_ratio(hf, sel.vertices, eye);
+        const double claimed = sel.stats.max_error_ratio;
         EXPECT_TRUE(std::isfinite(claimed));
         EXPECT_LE(worst, claimed * (1 + 1e-6) + 1e-9)
             << knob_label << " " << knob << " eye " << eye.x << "," << eye.y;
@@ -161,19 +161,19 @@ void expect_bound_covers_every_output_point(const std::vector<ig::terrain::Heigh
   }
 }
 
-// Stepping the knob from least to most accurate, update(tessellator, knob)
+// Stepping the knob from least to most accurate, select(tessellator, knob)
 // gives strictly more triangles and a claimed bound never larger each time.
-template <class Tessellator, class Update>
+template <class Tessellator, class Select>
 void expect_more_triangles_and_no_larger_bound(Tessellator& t, std::initializer_list<double> knobs,
-                                               const std::string& knob_label, Update update) {
+                                               const std::string& knob_label, Select select) {
   long long prev_tris = 0;
   double prev_bound = std::numeric_limits<double>::infinity();
   for (double knob : knobs) {
-    update(t, knob);
-    EXPECT_GT(t.stats().triangles, prev_tris) << knob_label << " " << knob;
-    EXPECT_LE(t.stats().max_error_ratio, prev_bound) << knob_label << " " << knob;
-    prev_tris = t.stats().triangles;
-    prev_bound = t.stats().max_error_ratio;
+    const auto s = select(t, knob).stats;
+    EXPECT_GT(s.triangles, prev_tris) << knob_label << " " << knob;
+    EXPECT_LE(s.max_error_ratio, prev_bound) << knob_label << " " << knob;
+    prev_tris = s.triangles;
+    prev_bound = s.max_error_ratio;
   }
 }
 

@@ -48,14 +48,14 @@ TEST(QuadtreeTessellator, LeavesDifferByAtMostOneLevelAndTheMeshIsWatertight) {
     QuadtreeTessellator q(hf);
     for (const auto& eye : eyes_for(hf))
       for (double c1 : {0.5, 2.0, 8.0, 32.0, 1000.0}) {
-        q.update(eye, c1, kC2);
+        const auto sel = q.select(eye, c1, kC2);
         const std::string where = std::to_string(hf.width) + "x" + std::to_string(hf.height) + " C1 " +
                                   std::to_string(c1) + " eye " + std::to_string(eye.x) + "," + std::to_string(eye.y);
         EXPECT_EQ(level_problem(q, hf), "") << where;
-        EXPECT_EQ(lod_checks::watertight(q.vertices(), hf.width, hf.height), "") << where;
-        EXPECT_EQ(q.stats().triangles * 3, (long long)q.vertices().size());
-        forced += q.stats().forced_splits;
-        splits += q.stats().splits;
+        EXPECT_EQ(lod_checks::watertight(sel.vertices, hf.width, hf.height), "") << where;
+        EXPECT_EQ(sel.stats.triangles * 3, (long long)sel.vertices.size());
+        forced += sel.stats.forced_splits;
+        splits += sel.stats.splits;
       }
   }
   std::printf("restriction forced %lld splits besides %lld by f < 1\n", forced, splits);
@@ -73,11 +73,11 @@ TEST(QuadtreeTessellator, RestrictionForcesSplitsWhereTheCriterionAloneWouldCrac
   long long forced = 0;
   for (const auto& eye : eyes_for(hf))
     for (double c1 : {0.3, 0.6, 1.0}) {
-      q.update(eye, c1, kC2);
-      forced += q.stats().forced_splits;
+      const auto sel = q.select(eye, c1, kC2);
+      forced += sel.stats.forced_splits;
       EXPECT_EQ(level_problem(q, hf), "");
-      EXPECT_EQ(lod_checks::watertight(q.vertices(), hf.width, hf.height), "");
-      EXPECT_EQ(q.stats().max_error_ratio, 0.0) << "a plane has no geometric error";
+      EXPECT_EQ(lod_checks::watertight(sel.vertices, hf.width, hf.height), "");
+      EXPECT_EQ(sel.stats.max_error_ratio, 0.0) << "a plane has no geometric error";
     }
   EXPECT_GT(forced, 0);
 }
@@ -119,7 +119,7 @@ TEST(QuadtreeNodes, FanErrorBoundsTheReferenceSurfaceAndRoughnessIsPropagated) {
 TEST(QuadtreeTessellator, ErrorBoundCoversEveryOutputPoint) {
   lod_checks::expect_bound_covers_every_output_point<QuadtreeTessellator>(
       {lod_checks::synthetic(65), lod_checks::cropped(50, 41)}, {1.0, 8.0}, "C1",
-      [](QuadtreeTessellator& q, const glm::dvec3& eye, double c1) { q.update(eye, c1, kC2); });
+      [](QuadtreeTessellator& q, const glm::dvec3& eye, double c1) { return q.select(eye, c1, kC2); });
 }
 
 TEST(QuadtreeTessellator, LargerC1GivesMoreTrianglesAndASmallerBound) {
@@ -127,24 +127,23 @@ TEST(QuadtreeTessellator, LargerC1GivesMoreTrianglesAndASmallerBound) {
   QuadtreeTessellator q(hf);
   const glm::dvec3 eye(0.2 * hf.extent_x_m(), 0.3 * hf.extent_y_m(), hf.max_m + 300.0);
   lod_checks::expect_more_triangles_and_no_larger_bound(
-      q, {1.0, 2.0, 4.0, 8.0, 16.0}, "C1", [&](QuadtreeTessellator& t, double c1) { t.update(eye, c1, kC2); });
+      q, {1.0, 2.0, 4.0, 8.0, 16.0}, "C1", [&](QuadtreeTessellator& t, double c1) { return t.select(eye, c1, kC2); });
 }
 
 TEST(QuadtreeTessellator, CulledNodesAreNotSplit) {
   const auto hf = lod_checks::synthetic(129);
   QuadtreeTessellator q(hf);
   const glm::dvec3 eye(0.5 * hf.extent_x_m(), 0.5 * hf.extent_y_m(), hf.max_m + 50.0);
-  q.update(eye, 8.0, kC2);
-  const long long all_eval = q.stats().evaluated, all_tris = q.stats().triangles;
+  const auto all = q.select(eye, 8.0, kC2).stats;
   const ig::lod::BoxInView east = [](const glm::dvec3&, const glm::dvec3& hi) { return hi.x >= 0.0; };
-  q.update(eye, 8.0, kC2, east);
-  EXPECT_LT(q.stats().evaluated, all_eval * 3 / 4);
-  EXPECT_LT(q.stats().triangles, all_tris * 3 / 4);
-  EXPECT_GT(q.stats().culled, 0);
+  const auto sel = q.select(eye, 8.0, kC2, east);
+  EXPECT_LT(sel.stats.evaluated, all.evaluated * 3 / 4);
+  EXPECT_LT(sel.stats.triangles, all.triangles * 3 / 4);
+  EXPECT_GT(sel.stats.culled, 0);
   EXPECT_EQ(level_problem(q, hf), "");
   // Culling is per node: every drawn fan triangle's node (centre = first
   // vertex, half-size = its largest offset from it) reaches east of the eye.
-  const auto& v = q.vertices();
+  const auto& v = sel.vertices;
   for (size_t t = 0; t < v.size(); t += 3) {
     const glm::ivec2 c(v[t]), p(v[t + 1]), r(v[t + 2]);
     const int half = std::max({std::abs(p.x - c.x), std::abs(p.y - c.y), std::abs(r.x - c.x), std::abs(r.y - c.y)});
@@ -163,10 +162,10 @@ TEST(QuadtreeTessellator, RejectsBadInput) {
   EXPECT_THROW(QuadtreeTessellator{flat_spacing}, std::invalid_argument);
   const auto hf = lod_checks::synthetic(17);
   QuadtreeTessellator q(hf);
-  EXPECT_THROW(q.update({0, 0, 100}, 0.0, kC2), std::invalid_argument);
-  EXPECT_THROW(q.update({0, 0, 100}, 4.0, -1.0), std::invalid_argument);
-  EXPECT_THROW(q.update({0, 0, 100}, std::nan(""), kC2), std::invalid_argument);
-  EXPECT_THROW(q.update({0, std::nan(""), 100}, 4.0, kC2), std::invalid_argument);
+  EXPECT_THROW(q.select({0, 0, 100}, 0.0, kC2), std::invalid_argument);
+  EXPECT_THROW(q.select({0, 0, 100}, 4.0, -1.0), std::invalid_argument);
+  EXPECT_THROW(q.select({0, 0, 100}, std::nan(""), kC2), std::invalid_argument);
+  EXPECT_THROW(q.select({0, std::nan(""), 100}, 4.0, kC2), std::invalid_argument);
 }
 
 }  // namespace

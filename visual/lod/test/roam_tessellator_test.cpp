@@ -61,11 +61,11 @@ TEST(RoamTessellator, OutputIsWatertightForManyViewsSizesAndTolerances) {
     RoamTessellator roam(hf);
     for (const auto& eye : eyes_for(hf))
       for (double tau : {0.0, 0.5, 2.0, 8.0, 1000.0}) {
-        roam.update(eye, tau, kPixelsPerRadian);
-        const std::string problem = lod_checks::watertight(roam.vertices(), hf.width, hf.height);
+        const auto sel = roam.select(eye, tau, kPixelsPerRadian);
+        const std::string problem = lod_checks::watertight(sel.vertices, hf.width, hf.height);
         EXPECT_EQ(problem, "") << hf.width << "x" << hf.height << " tau " << tau << " eye " << eye.x << ","
                                << eye.y << "," << eye.z;
-        EXPECT_EQ(roam.stats().triangles * 3, (long long)roam.vertices().size());
+        EXPECT_EQ(sel.stats.triangles * 3, (long long)sel.vertices.size());
       }
   }
 }
@@ -73,10 +73,10 @@ TEST(RoamTessellator, OutputIsWatertightForManyViewsSizesAndTolerances) {
 TEST(RoamTessellator, ForcedSplitsHappenAndKeepTheMeshWatertight) {
   const auto hf = lod_checks::synthetic(129);
   RoamTessellator roam(hf);
-  roam.update({0.3 * hf.extent_x_m(), 0.6 * hf.extent_y_m(), hf.max_m + 20.0}, 1.0, kPixelsPerRadian);
-  EXPECT_GT(roam.stats().forced_splits, 0);
-  EXPECT_LT(roam.stats().forced_splits, roam.stats().splits);
-  EXPECT_EQ(lod_checks::watertight(roam.vertices(), hf.width, hf.height), "");
+  const auto sel = roam.select({0.3 * hf.extent_x_m(), 0.6 * hf.extent_y_m(), hf.max_m + 20.0}, 1.0, kPixelsPerRadian);
+  EXPECT_GT(sel.stats.forced_splits, 0);
+  EXPECT_LT(sel.stats.forced_splits, sel.stats.splits);
+  EXPECT_EQ(lod_checks::watertight(sel.vertices, hf.width, hf.height), "");
 }
 
 // Every bintree triangle's plane stays within its diamond's wedgie of the
@@ -119,7 +119,7 @@ TEST(RoamTessellator, ErrorBoundCoversEveryOutputPoint) {
   // claimed max_error_ratio.
   lod_checks::expect_bound_covers_every_output_point<RoamTessellator>(
       {lod_checks::synthetic(65), lod_checks::cropped(50, 41)}, {0.5, 4.0}, "tau",
-      [](RoamTessellator& roam, const glm::dvec3& eye, double tau) { roam.update(eye, tau, kPixelsPerRadian); });
+      [](RoamTessellator& roam, const glm::dvec3& eye, double tau) { return roam.select(eye, tau, kPixelsPerRadian); });
 }
 
 TEST(RoamTessellator, SmallerToleranceGivesMoreTrianglesAndASmallerBound) {
@@ -128,31 +128,30 @@ TEST(RoamTessellator, SmallerToleranceGivesMoreTrianglesAndASmallerBound) {
   const glm::dvec3 eye(0.2 * hf.extent_x_m(), 0.3 * hf.extent_y_m(), hf.max_m + 300.0);
   lod_checks::expect_more_triangles_and_no_larger_bound(
       roam, {16.0, 8.0, 4.0, 2.0, 1.0}, "tau",
-      [&](RoamTessellator& t, double tau) { t.update(eye, tau, kPixelsPerRadian); });
+      [&](RoamTessellator& t, double tau) { return t.select(eye, tau, kPixelsPerRadian); });
 }
 
 TEST(RoamTessellator, PlanesNeedOnlyTheRootTriangles) {
   const auto hf =
       lod_checks::heightfield_from(65, 65, 10.0, 10.0, [](int i, int j) { return 100.0 + 0.3 * i - 0.7 * j; });
   RoamTessellator roam(hf);
-  roam.update({320, 320, 150}, 0.0, kPixelsPerRadian);
-  EXPECT_EQ(roam.stats().triangles, 2);
-  EXPECT_EQ(roam.stats().max_error_ratio, 0.0);
+  const auto s = roam.select({320, 320, 150}, 0.0, kPixelsPerRadian).stats;
+  EXPECT_EQ(s.triangles, 2);
+  EXPECT_EQ(s.max_error_ratio, 0.0);
 }
 
 TEST(RoamTessellator, CulledSubtreesAreNotRefined) {
   const auto hf = lod_checks::synthetic(129);
   RoamTessellator roam(hf);
   const glm::dvec3 eye(0.5 * hf.extent_x_m(), 0.5 * hf.extent_y_m(), hf.max_m + 50.0);
-  roam.update(eye, 1.0, kPixelsPerRadian);
-  const long long all_nodes = roam.stats().nodes, all_tris = roam.stats().triangles;
+  const auto all = roam.select(eye, 1.0, kPixelsPerRadian).stats;
   // A "view" of everything east of the eye only.
   const ig::lod::BoxInView east = [](const glm::dvec3&, const glm::dvec3& hi) { return hi.x >= 0.0; };
-  roam.update(eye, 1.0, kPixelsPerRadian, east);
-  EXPECT_LT(roam.stats().nodes, all_nodes * 3 / 4);
-  EXPECT_LT(roam.stats().triangles, all_tris * 3 / 4);
-  EXPECT_GT(roam.stats().culled, 0);
-  const auto& v = roam.vertices();
+  const auto sel = roam.select(eye, 1.0, kPixelsPerRadian, east);
+  EXPECT_LT(sel.stats.nodes, all.nodes * 3 / 4);
+  EXPECT_LT(sel.stats.triangles, all.triangles * 3 / 4);
+  EXPECT_GT(sel.stats.culled, 0);
+  const auto& v = sel.vertices;
   for (size_t t = 0; t < v.size(); t += 3) {
     const double max_x = std::max({v[t].x, v[t + 1].x, v[t + 2].x}) * hf.spacing_x_m;
     ASSERT_GE(max_x, eye.x) << "a triangle wholly west of the eye was drawn";
@@ -170,9 +169,9 @@ TEST(RoamTessellator, RejectsBadInput) {
   EXPECT_THROW(RoamTessellator{flat_spacing}, std::invalid_argument);
   const auto hf = lod_checks::synthetic(17);
   RoamTessellator roam(hf);
-  EXPECT_THROW(roam.update({0, 0, 100}, -1.0, kPixelsPerRadian), std::invalid_argument);
-  EXPECT_THROW(roam.update({0, 0, 100}, std::nan(""), kPixelsPerRadian), std::invalid_argument);
-  EXPECT_THROW(roam.update({std::nan(""), 0, 100}, 1.0, kPixelsPerRadian), std::invalid_argument);
+  EXPECT_THROW(roam.select({0, 0, 100}, -1.0, kPixelsPerRadian), std::invalid_argument);
+  EXPECT_THROW(roam.select({0, 0, 100}, std::nan(""), kPixelsPerRadian), std::invalid_argument);
+  EXPECT_THROW(roam.select({std::nan(""), 0, 100}, 1.0, kPixelsPerRadian), std::invalid_argument);
 }
 
 }  // namespace

@@ -135,7 +135,7 @@ inline void dump(const Frame& f, const std::string& name) { dump_frame("IG_LOD_D
 
 // Renders one view of `scene` (world.scene unless given) with the method.
 inline Frame render(World& world, ig::render::TerrainMethod& method, const ig::render::Camera& camera,
-                    const ig::render::TerrainScene* scene = nullptr) {
+                    ig::render::TerrainScene* scene = nullptr) {
   if (!scene) scene = world.scene.get();
   ig::render::FrameRenderer renderer(*scene, method, world.shader_dir);
   const auto r = renderer.render(camera, *world.target);

@@ -91,9 +91,9 @@ TEST(PagedLevel1Hold, AFarJumpKeepsLevel1UntilItsTilesAreIn) {
   const double s = world.hf.spacing_x_m;
   const auto here = lod_views::camera_at(world.hf, 200 * s, 200 * s, 300.0, 45.0, -60.0);
   const auto there = lod_views::camera_at(world.hf, 820 * s, 830 * s, 300.0, 45.0, -60.0);
-  method.update(here);  // the first frame may wait: nothing is resident yet
+  scene.apply(method.update(here));  // the first frame may wait: nothing is resident yet
   cache.wait_idle();
-  method.update(here);
+  scene.apply(method.update(here));
   cache.wait_idle();
   ASSERT_FALSE(method.level1_held());
   const glm::ivec2 origin_here = method.level1_origin();
@@ -106,7 +106,7 @@ TEST(PagedLevel1Hold, AFarJumpKeepsLevel1UntilItsTilesAreIn) {
   // reads a tile on the frame's thread and Level1 stays where it was.
   gate.set(false);
   for (int frame = 0; frame < 3; ++frame) {
-    method.update(there);
+    scene.apply(method.update(there));
     EXPECT_TRUE(method.level1_held()) << "frame " << frame;
     EXPECT_EQ(method.level1_origin(), origin_here);
     EXPECT_EQ(method.level1_size(), n_here);
@@ -120,7 +120,7 @@ TEST(PagedLevel1Hold, AFarJumpKeepsLevel1UntilItsTilesAreIn) {
   int frames = 0;
   while (method.level1_held() && frames < 200) {
     cache.wait_idle();
-    method.update(there);
+    scene.apply(method.update(there));
     ++frames;
   }
   EXPECT_FALSE(method.level1_held()) << "after " << frames << " frames";

@@ -31,8 +31,8 @@ TEST(Roam, NoHolesAgainstTheReferenceAtManyViews) {
 
     // The same eye without culling: the whole mesh is crack-free.
     ig::lod::RoamTessellator whole(w.hf);
-    whole.update(v.camera.position, 2.0, ig::render::pixels_per_radian(v.camera, kH));
-    EXPECT_EQ(lod_checks::watertight(whole.vertices(), w.hf.width, w.hf.height), "") << v.name;
+    const auto sel = whole.select(v.camera.position, 2.0, ig::render::pixels_per_radian(v.camera, kH));
+    EXPECT_EQ(lod_checks::watertight(sel.vertices, w.hf.width, w.hf.height), "") << v.name;
   }
 }
 
