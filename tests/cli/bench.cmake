@@ -6,15 +6,18 @@ set(IG_TEST_OUT ${CMAKE_BINARY_DIR}/test-out)
 set(IG_BENCH_TINY ${CMAKE_SOURCE_DIR}/tests/tools/bench_tiny_scenario.json)
 set(IG_BENCH_CHECK ${CMAKE_SOURCE_DIR}/tests/tools/check_bench_output.py)
 
-# Default knobs: one row per method, 8 frames (the whole tiny flight), 5 sampled.
+# Default knobs: one row per method, 8 frames (the whole tiny flight), 5 sampled
+# (positions 0, 2, 4, 5, 7: four of them have a frame before them, the
+# temporal error's pairs).
 add_test(NAME cli.bench.default_knobs
   COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/bench_default'
     '$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,reference --error-samples 5 --out '${IG_TEST_OUT}/bench_default'
-    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_default' --rows 2 --frames 8 --samples 5 --methods twolevel,reference")
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_default' --rows 2 --frames 8 --samples 5 --pairs 4 --methods twolevel,reference")
 set_tests_properties(cli.bench.default_knobs PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok")
 
 # --sweep: one row per knob value of each method's knob_sweep (plus its
 # default when the sweep lacks it); --frames subsamples, --size / --fov override.
+# Every one of the 6 frames is sampled: 5 have a frame before them.
 add_test(NAME cli.bench.sweep
   COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/bench_sweep'
     '$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,reference --sweep --frames 6 --size 128x96 --fov 30 --out '${IG_TEST_OUT}/bench_sweep'
@@ -22,7 +25,7 @@ add_test(NAME cli.bench.sweep
     test $rows -ge 3
     grep -q 'image: 128x96, vertical FOV 30 deg' '${IG_TEST_OUT}/bench_sweep/results.md'
     grep -q '^twolevel,level0_budget,.*,1,' '${IG_TEST_OUT}/bench_sweep/results.csv'
-    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_sweep' --rows $rows --frames 6 --samples 6 --methods twolevel,reference")
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_sweep' --rows $rows --frames 6 --samples 6 --pairs 5 --methods twolevel,reference")
 set_tests_properties(cli.bench.sweep PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok")
 
 set(_bench "'$<TARGET_FILE:ig>' bench")
