@@ -28,6 +28,17 @@ add_test(NAME cli.bench.sweep
     python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_sweep' --rows $rows --frames 6 --samples 6 --pairs 5 --methods twolevel,reference")
 set_tests_properties(cli.bench.sweep PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok")
 
+# Every registered method on a real DEM (skips without IG_DEM_DIR): a short
+# flight over Mt Rainier, 6 frames 0.2 s apart, 3 sampled (positions 1, 3, 5,
+# each with a frame before it). Every row's temporal error is finite and
+# non-negative, the reference's 0, and results.csv agrees with samples.csv.
+ig_real_dem_test(cli.bench.all_methods_real_dem "real-DEM bench"
+  "set -e; rm -rf '${IG_TEST_OUT}/bench_rainier'
+    '$<TARGET_FILE:ig>' bench '${CMAKE_SOURCE_DIR}/tests/tools/bench_rainier_scenario.json' --methods all --error-samples 3 --out '${IG_TEST_OUT}/bench_rainier'
+    rows=$(( $(wc -l < '${IG_TEST_OUT}/bench_rainier/results.csv') - 1 ))
+    test $rows -ge 2
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_rainier' --rows $rows --frames 6 --samples 3 --pairs 3 --methods all")
+
 set(_bench "'$<TARGET_FILE:ig>' bench")
 ig_cli_failure_test(cli.bench.unknown_method "unknown method 'nope' \\(available: .*exit=2"
   "${_bench} '${IG_BENCH_TINY}' --methods twolevel,nope --out '${IG_TEST_OUT}/bench_nope'")
