@@ -96,6 +96,12 @@ std::string matched_ms_text(const MatchedRow& m) {
   return v;
 }
 
+// gnuplot's default colours repeat after a few curves: one colour and point
+// shape per method so seven curves stay apart (the same in every plot).
+constexpr const char* kColours[] = {"#d62728", "#7f7f7f", "#1f77b4", "#2ca02c",
+                                    "#ff7f0e", "#9467bd", "#17becf", "#8c564b"};
+constexpr int kPoints[] = {7, 6, 5, 9, 11, 13, 4, 8};
+
 std::string how_text(MatchKind k) {
   switch (k) {
     case MatchKind::Measured: return "measured at the target";
@@ -126,7 +132,7 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
        "lod_ms_median,triangles_median,error_samples,horizon_mean_px,horizon_max_px,depth_rel_p95,"
        "depth_rel_max,psnr_db,holes_mean,hole_fraction,interior_holes_mean,enclosed_holes_mean,bound_px_median,"
        "bound_px_max,vs_invocations_median,fs_invocations_median,primitives_median,draw_calls_median,"
-       "upload_bytes_median,cpu_ms_median\n";
+       "upload_bytes_median,cpu_ms_median,temporal_pairs,temporal_error_mean,temporal_error_max\n";
   for (const auto& r : rows) {
     o << csv_field(r.method) << ',' << (r.knob ? csv_field(r.knob->name) : "") << ','
       << (r.knob ? num(r.knob->value) : "") << ',' << (r.knob ? csv_field(r.knob->unit) : "") << ','
@@ -139,7 +145,8 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
       << opt(r.bound_px_max) << ',' << fmt("%.10g", r.vs_invocations_median) << ','
       << fmt("%.10g", r.fs_invocations_median) << ',' << fmt("%.10g", r.primitives_median) << ','
       << fmt("%.10g", r.draw_calls_median) << ',' << fmt("%.10g", r.upload_bytes_median) << ','
-      << fmt("%.4f", r.cpu_ms_median) << '\n';
+      << fmt("%.4f", r.cpu_ms_median) << ',' << r.temporal_pairs << ',' << num(r.temporal_error_mean) << ','
+      << num(r.temporal_error_max) << '\n';
   }
 }
 
@@ -164,16 +171,20 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
     << "), one untimed warm-up frame per method\n"
     << "- image error: " << c.sample_indices.size() << " sampled frames (scenario frames " << list(c.sample_indices)
     << ") against the reference renderer with the same camera\n"
+    << "- temporal error: " << c.temporal_before_indices.size()
+    << " pairs, each sampled frame with the frame rendered just before it (scenario frames "
+    << list(c.temporal_before_indices) << "), against the reference's change between the same cameras\n"
     << "- knobs: " << (c.sweep ? "each method's sweep (knob_sweep) plus its default" : "each method's default")
     << "\n"
     << "- wall time of the whole run: " << fmt("%.1f", c.wall_s) << " s\n\n";
 
   o << "## Error against run time\n\n"
     << "Frame time: LOD update + passes + sky, closed with glFinish (wall clock), median and p95 over the frames. "
-       "Errors over the sampled frames. Column definitions: docs/bench.md.\n\n"
+       "Errors over the sampled frames; temporal error (popping, luma levels) over the pairs (frame rendered "
+       "just before a sample, the sample). Column definitions: docs/bench.md.\n\n"
     << "| method | knob | frame ms median | p95 | fps | LOD ms | triangles | horizon mean px | horizon max px | "
-       "depth p95 | depth max | PSNR dB | holes/frame | bound px median / max |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "depth p95 | depth max | PSNR dB | holes/frame | bound px median / max | temporal error mean / max |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
     o << "| " << r.method << " | " << knob_text(r) << " | " << fmt("%.2f", r.frame_ms_median) << " | "
       << fmt("%.2f", r.frame_ms_p95) << " | " << fmt("%.1f", r.frame_ms_median > 0 ? 1000.0 / r.frame_ms_median : 0.0)
@@ -182,6 +193,8 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
       << fmt("%.5f", r.depth_rel_p95) << " | " << fmt("%.4f", r.depth_rel_max) << " | " << fmt("%.2f", r.psnr_db)
       << " | " << fmt("%.1f", r.holes_mean) << " | "
       << (r.bound_px_median ? fmt("%.2f", *r.bound_px_median) + " / " + fmt("%.2f", *r.bound_px_max) : "none")
+      << " | "
+      << (r.temporal_pairs ? fmt("%.3f", r.temporal_error_mean) + " / " + fmt("%.3f", r.temporal_error_max) : "none")
       << " |\n";
 
   o << "\n## Work per frame\n\n"
@@ -275,11 +288,6 @@ bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>
       gp << "set arrow from graph 0, first " << num(*target_px) << " to graph 1, first " << num(*target_px)
          << " nohead dt 2 lc rgb 'gray40'\n";
     gp << "plot ";
-    // gnuplot's default colours repeat after a few curves: one colour and
-    // point shape per method so seven curves stay apart.
-    static constexpr const char* kColours[] = {"#d62728", "#7f7f7f", "#1f77b4", "#2ca02c",
-                                               "#ff7f0e", "#9467bd", "#17becf", "#8c564b"};
-    static constexpr int kPoints[] = {7, 6, 5, 9, 11, 13, 4, 8};
     for (size_t m = 0; m < methods.size(); ++m)
       gp << (m ? ", " : "") << "$m" << m << " using 1:2 with linespoints lw 2 lc rgb '" << kColours[m % 8]
          << "' pt " << kPoints[m % 8] << " title '" << methods[m].first << "', $m" << m
@@ -290,6 +298,34 @@ bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>
     gp << "\n";
   }
   return run_gnuplot(gp.str(), png_path, "ig bench", "error_vs_time.png");
+}
+
+bool plot_temporal_error(const std::string& png_path, const std::vector<BenchRow>& rows, const std::string& title) {
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 1000,650 noenhanced\n"
+     << "set output '" << png_path << "'\n"
+     << "set title '" << title << "'\n"
+     << "set xlabel 'scenario time (s)'\nset ylabel 'temporal error (mean |dM - dR|, luma levels)'\n"
+     << "set grid\nset key outside right top\nset yrange [0:*]\n";
+  std::vector<const BenchRow*> curves;
+  for (const auto& r : rows)
+    if (r.default_knob && !r.temporal_error_by_time.empty()) curves.push_back(&r);
+  for (size_t m = 0; m < curves.size(); ++m) {
+    gp << "$m" << m << " << EOD\n";
+    for (const auto& [t, v] : curves[m]->temporal_error_by_time) gp << num(t) << ' ' << num(v) << "\n";
+    gp << "EOD\n";
+  }
+  if (curves.empty()) {
+    // No pair (a single rendered frame): an empty plot that says so.
+    gp << "set xrange [0:1]\nset label 'no temporal pairs' at graph 0.5, 0.5 center\nplot NaN notitle\n";
+  } else {
+    gp << "plot ";
+    for (size_t m = 0; m < curves.size(); ++m)
+      gp << (m ? ", " : "") << "$m" << m << " using 1:2 with linespoints lw 2 lc rgb '" << kColours[m % 8] << "' pt "
+         << kPoints[m % 8] << " title '" << curves[m]->method << "'";
+    gp << "\n";
+  }
+  return run_gnuplot(gp.str(), png_path, "ig bench", "temporal_error.png");
 }
 
 }  // namespace ig::session

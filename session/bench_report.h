@@ -1,11 +1,12 @@
 #pragma once
 // What ig bench leaves behind: results.csv (one row per method and knob
 // value), results.md (the same as a table plus the run's context and the
-// matched-horizon-error table) and error_vs_time.png (gnuplot). Column and
-// metric definitions: docs/bench.md.
+// matched-horizon-error table), error_vs_time.png and temporal_error.png
+// (gnuplot). Column and metric definitions: docs/bench.md.
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/terrain_method.h"
@@ -39,6 +40,12 @@ struct BenchRow {
   double interior_holes_mean = 0.0;
   double enclosed_holes_mean = 0.0;  // sky through the surface (cracks), per sampled frame
   std::optional<double> bound_px_median, bound_px_max;  // nullopt: the method claims no bound
+  // Temporal error (popping), per pair (frame rendered just before a sample,
+  // the sample): mean over pixels of |(M_k - M_k-1) - (R_k - R_k-1)|, luma levels.
+  int temporal_pairs = 0;
+  double temporal_error_mean = 0.0;  // mean over the pairs
+  double temporal_error_max = 0.0;   // largest pair
+  std::vector<std::pair<double, double>> temporal_error_by_time;  // (scenario time s of the sample, its error)
 };
 
 // Where a method's frame time at the target horizon error comes from.
@@ -79,6 +86,7 @@ struct BenchContext {
   double time_step_s = 0.0;
   std::vector<int> frame_indices;   // the scenario frames rendered
   std::vector<int> sample_indices;  // of which these were compared with the reference
+  std::vector<int> temporal_before_indices;  // the frames rendered just before a sample (its temporal pair)
   double wall_s = 0.0;
   bool sweep = false;
 };
@@ -90,5 +98,9 @@ void write_bench_markdown(const std::string& path, const BenchContext& context, 
 // Returns false (and says why on stderr) when gnuplot is missing or fails.
 bool plot_error_vs_time(const std::string& png_path, const std::vector<BenchRow>& rows,
                         std::optional<double> target_px, const std::string& title);
+// Temporal error against scenario time, one curve per method at its default
+// knob (a sweep's other values are in results.csv and samples.csv). Returns
+// false as plot_error_vs_time does.
+bool plot_temporal_error(const std::string& png_path, const std::vector<BenchRow>& rows, const std::string& title);
 
 }  // namespace ig::session

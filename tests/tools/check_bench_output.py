@@ -2,9 +2,11 @@
 """Checks the outputs of `ig bench` (docs/bench.md): results.csv has the
 documented header and one row per expected method/knob, every numeric field
 is a finite number (knob and bound fields may be empty where the method has
-no knob / claims no bound), the reference row has zero error, results.md
-holds both tables, error_vs_time.png is a real PNG, and frames.csv /
-samples.csv have one row per method/knob and frame / sampled frame.
+no knob / claims no bound), the reference row has zero error (temporal
+error included), the temporal error is non-negative for every row, results.md
+holds both tables, error_vs_time.png and temporal_error.png are real PNGs, and
+frames.csv / samples.csv have one row per method/knob and frame / sampled
+frame, samples.csv with a temporal error exactly where a pair exists.
 Prints what it checked; exit 1 on the first failure."""
 import argparse
 import csv
@@ -19,7 +21,7 @@ COLUMNS = [
     "horizon_mean_px", "horizon_max_px", "depth_rel_p95", "depth_rel_max", "psnr_db",
     "holes_mean", "hole_fraction", "interior_holes_mean", "enclosed_holes_mean", "bound_px_median",
     "bound_px_max", "vs_invocations_median", "fs_invocations_median", "primitives_median", "draw_calls_median",
-    "upload_bytes_median", "cpu_ms_median",
+    "upload_bytes_median", "cpu_ms_median", "temporal_pairs", "temporal_error_mean", "temporal_error_max",
 ]
 TEXT = {"method", "knob_name", "knob_unit"}
 MAY_BE_EMPTY = {"knob_value", "bound_px_median", "bound_px_max"}
@@ -41,13 +43,21 @@ def number(row, col, where):
     return x
 
 
+def same_knob(a, b):
+    """samples.csv and results.csv write knob values with different digits."""
+    if a == "" or b == "":
+        return a == b
+    return math.isclose(float(a), float(b), rel_tol=1e-5)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("out_dir")
     ap.add_argument("--rows", type=int, required=True, help="expected results.csv data rows")
     ap.add_argument("--frames", type=int, required=True, help="frames per method/knob")
     ap.add_argument("--samples", type=int, required=True, help="error samples per method/knob")
-    ap.add_argument("--methods", required=True, help="comma-separated methods expected, in order")
+    ap.add_argument("--methods", required=True, help="comma-separated methods expected, in order, or all (any)")
+    ap.add_argument("--pairs", type=int, required=True, help="temporal error pairs per method/knob")
     a = ap.parse_args()
     d = a.out_dir
 
@@ -87,11 +97,15 @@ def main():
             fail(f"{where}: no triangles drawn")
         if not 0 <= number(row, "hole_fraction", where) <= 1:
             fail(f"{where}: hole_fraction outside [0, 1]")
+        if int(number(row, "temporal_pairs", where)) != a.pairs:
+            fail(f"{where}: temporal_pairs {row['temporal_pairs']} != {a.pairs}")
+        if not 0 <= number(row, "temporal_error_mean", where) <= number(row, "temporal_error_max", where):
+            fail(f"{where}: temporal error mean must lie in [0, max]")
         if row["method"] == "reference":
-            for col in ("horizon_mean_px", "horizon_max_px", "depth_rel_max", "holes_mean"):
+            for col in ("horizon_mean_px", "horizon_max_px", "depth_rel_max", "holes_mean", "temporal_error_max"):
                 if number(row, col, where) != 0:
                     fail(f"{where}: the reference against itself must have {col} = 0")
-    if methods != a.methods.split(","):
+    if a.methods != "all" and methods != a.methods.split(","):
         fail(f"methods {methods} != {a.methods.split(',')}")
     defaults = [r["method"] for r in rows if r["is_default"] == "1"]
     if sorted(defaults) != sorted(methods):
@@ -109,12 +123,13 @@ def main():
         if f"| {m} |" not in md:
             fail(f"results.md has no row for {m}")
 
-    png = open(os.path.join(d, "error_vs_time.png"), "rb").read()
-    if png[:8] != b"\x89PNG\r\n\x1a\n" or png[12:16] != b"IHDR":
-        fail("error_vs_time.png is not a PNG")
-    w, h = struct.unpack(">II", png[16:24])
-    if w < 200 or h < 200 or len(png) < 2000:
-        fail(f"error_vs_time.png looks empty ({w}x{h}, {len(png)} bytes)")
+    for name in ("error_vs_time.png", "temporal_error.png"):
+        png = open(os.path.join(d, name), "rb").read()
+        if png[:8] != b"\x89PNG\r\n\x1a\n" or png[12:16] != b"IHDR":
+            fail(f"{name} is not a PNG")
+        w, h = struct.unpack(">II", png[16:24])
+        if w < 200 or h < 200 or len(png) < 2000:
+            fail(f"{name} looks empty ({w}x{h}, {len(png)} bytes)")
 
     for name, per_row in (("frames.csv", a.frames), ("samples.csv", a.samples)):
         with open(os.path.join(d, name), newline="") as f:
@@ -122,8 +137,35 @@ def main():
         if n != a.rows * per_row:
             fail(f"{name} has {n} rows, expected {a.rows * per_row}")
 
+    with open(os.path.join(d, "samples.csv"), newline="") as f:
+        samples = list(csv.DictReader(f))
+    for k, row in enumerate(samples):
+        where = f"samples.csv row {k + 1} ({row['method']} frame {row['frame']})"
+        if (row["frame_before"] == "") != (row["temporal_error"] == ""):
+            fail(f"{where}: frame_before and temporal_error must be both set or both empty")
+        if row["temporal_error"] != "":
+            if not int(row["frame_before"]) < int(row["frame"]):
+                fail(f"{where}: frame_before {row['frame_before']} is not before the sample")
+            for col in ("temporal_error", "method_change", "reference_change"):
+                if not number(row, col, where) >= 0:
+                    fail(f"{where}: {col} must be >= 0")
+    for r in rows:
+        pairs = [s for s in samples if s["method"] == r["method"] and same_knob(s["knob"], r["knob_value"])
+                 and s["temporal_error"] != ""]
+        if len(pairs) != int(r["temporal_pairs"]):
+            fail(f"{r['method']} {r['knob_value']}: {len(pairs)} samples.csv pairs, results.csv says "
+                 f"{r['temporal_pairs']}")
+        if pairs:
+            mean = sum(float(s["temporal_error"]) for s in pairs) / len(pairs)
+            if not math.isclose(mean, float(r["temporal_error_mean"]), rel_tol=1e-4, abs_tol=1e-4):
+                fail(f"{r['method']} {r['knob_value']}: temporal_error_mean {r['temporal_error_mean']} is not the "
+                     f"mean of its samples.csv pairs ({mean})")
+    if "temporal error mean / max" not in md:
+        fail("results.md lacks the temporal error column")
+
     print(f"check_bench_output: ok: {len(rows)} rows ({', '.join(methods)}), all numeric fields finite, "
-          f"results.md tables, error_vs_time.png {w}x{h}")
+          f"temporal error >= 0 over {a.pairs} pairs each, results.md tables, error_vs_time.png and "
+          f"temporal_error.png")
 
 
 if __name__ == "__main__":

@@ -1,13 +1,14 @@
 // ig bench SCENARIO.json: every LOD method (and with --sweep every value of
 // its error knob) flown along the same scenario path with the same size and
 // camera; frame time against image error versus the reference renderer.
-// Writes results.csv, results.md, error_vs_time.png, frames.csv and
-// samples.csv (docs/bench.md).
+// Writes results.csv, results.md, error_vs_time.png, temporal_error.png,
+// frames.csv and samples.csv (docs/bench.md).
 //
 // The terrain is loaded once (ScenarioRunner, as for ig run) and its
 // TerrainScene shared by every method. The runner's own method is the
-// reference: it renders the sampled frames first and they are kept on the
-// CPU, so the timed runs are never interrupted by a reference render.
+// reference: it renders the sampled frames (and the frame before each, for
+// the temporal error) first and they are kept on the CPU, so the timed runs
+// are never interrupted by a reference render.
 #include <unistd.h>
 
 #include <algorithm>
@@ -22,6 +23,7 @@
 #include <set>
 
 #include "session/bench_report.h"
+#include "session/bench_samples.h"
 #include "cli_args.h"
 #include "commands.h"
 #include "gl/shader_program.h"
@@ -30,6 +32,7 @@
 #include "session/scenario_runner.h"
 #include "stats/frame_log.h"
 #include "stats/image_error.h"
+#include "stats/temporal_error.h"
 
 namespace ig::app {
 namespace {
@@ -39,13 +42,15 @@ using session::MatchedRow;
 using session::write_bench_csv;
 using session::write_bench_markdown;
 using session::plot_error_vs_time;
+using session::plot_temporal_error;
 using session::match_horizon_error;
 
 constexpr const char* kUsage =
     "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
     "                [--error-samples N] [--match-px PX] [--skip-pass NAME] [--shader-dir DIR] [--out DIR]\n"
     "Flies every LOD method along the scenario's path and reports frame time against image error\n"
-    "versus the reference renderer (docs/bench.md): results.csv, results.md, error_vs_time.png.\n"
+    "versus the reference renderer (docs/bench.md): results.csv, results.md, error_vs_time.png,\n"
+    "temporal_error.png.\n"
     "Exit status: 0 ok, 1 the run failed (or the plot could not be drawn), 2 bad arguments.\n";
 
 using Clock = std::chrono::steady_clock;
@@ -58,13 +63,6 @@ double process_cpu_ms() {
 
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-// Small relative errors need more digits than frames.csv's fixed 4 decimals.
-std::string g6(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
 }
 
 struct Args {
@@ -289,27 +287,37 @@ int run(const Args& args) {
 
   const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
   const std::vector<int> sample_pos = sample_positions(int(frames.size()), args.error_samples);
+  // The temporal error pairs each sample with the frame rendered just before
+  // it: adjacent frames, so it measures popping between consecutive images
+  // (the samples themselves are spread over the flight).
+  std::set<int> before_pos, image_pos(sample_pos.begin(), sample_pos.end());
+  for (int p : sample_pos)
+    if (p > 0) before_pos.insert(p - 1), image_pos.insert(p - 1);
   std::vector<Variant> variants;
   for (const auto& m : args.methods)
     for (auto& v : variants_for(m, args.sweep, method_options)) variants.push_back(v);
 
   Progress progress(isatty(STDERR_FILENO) != 0,
-                    (long long)sample_pos.size() + (long long)variants.size() * (long long)frames.size());
+                    (long long)image_pos.size() + (long long)variants.size() * (long long)frames.size());
 
-  // Reference frames for the sampled frames, rendered once and kept.
+  // Reference frames for the sampled frames and the frames before them,
+  // rendered once, in order, and kept (the frames before only as luma).
   auto& ref_channel = runner.channels().front();
   std::map<int, stats::FrameImage> reference;  // by position in `frames`
+  std::map<int, stats::LumaImage> reference_luma;
   std::map<int, render::Camera> reference_camera;
   {
     const auto t0 = Clock::now();
-    for (int p : sample_pos) {
+    for (int p : image_pos) {
       runner.render_frame(frames[p]);
-      reference[p] = stats::read_frame_image(*ref_channel.target);
+      stats::FrameImage img = stats::read_frame_image(*ref_channel.target);
+      reference_luma[p] = stats::luminance(img);
+      if (std::find(sample_pos.begin(), sample_pos.end(), p) != sample_pos.end()) reference[p] = std::move(img);
       reference_camera[p] = ref_channel.camera;
-      progress.step("reference images", int(reference.size()), int(sample_pos.size()));
+      progress.step("reference images", int(reference_luma.size()), int(image_pos.size()));
     }
     char buf[160];
-    std::snprintf(buf, sizeof buf, "%zu reference frames at %dx%d in %.1f s", sample_pos.size(), width, height,
+    std::snprintf(buf, sizeof buf, "%zu reference frames at %dx%d in %.1f s", image_pos.size(), width, height,
                   ms_since(t0) / 1000.0);
     progress.line(buf);
   }
@@ -336,9 +344,9 @@ int run(const Args& args) {
     const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
 
     renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
-    std::vector<double> frame_ms, cpu_ms, lod_ms, triangles, bounds, depth_p95, vs, fs, prims, draws, uploads;
-    double horizon_sum = 0.0, sq_sum = 0.0, samples_px = 0.0, holes = 0.0, interior_holes = 0.0, enclosed_holes = 0.0,
-           ref_px = 0.0;
+    std::vector<double> frame_ms, cpu_ms, lod_ms, triangles, vs, fs, prims, draws, uploads;
+    session::BenchSamples samples(width, height);
+    std::map<int, stats::LumaImage> method_before;  // the method's images of the frames before samples
     size_t next_sample = 0;
     for (int i = 0; i < int(frames.size()); ++i) {
       const render::Camera camera = camera_at(frames[i]);
@@ -367,43 +375,30 @@ int run(const Args& args) {
                                             {"triangles", vr.method.triangles}};
       session::append_work_columns(frame_row, vr, /*per_pass=*/false);
       frames_csv.add_row(frame_row);
-      if (next_sample < sample_pos.size() && sample_pos[next_sample] == i) {
-        ++next_sample;
+      const bool sampled = next_sample < sample_pos.size() && sample_pos[next_sample] == i;
+      if (sampled || before_pos.count(i)) {
         if (reference_camera[i].position != camera.position)
           throw std::logic_error("reference and method cameras differ at frame " + std::to_string(frames[i]));
         const stats::FrameImage img = stats::read_frame_image(target);
-        const stats::ImageError e = stats::image_error(img, reference[i], camera);
-        const auto bound = method->error_bound_px(camera, height);
-        horizon_sum += e.horizon_mean_px;
-        row.horizon_max_px = std::max(row.horizon_max_px, e.horizon_max_px);
-        depth_p95.push_back(e.depth_rel_p95);
-        row.depth_rel_max = std::max(row.depth_rel_max, e.depth_rel_max);
-        sq_sum += e.mse * 3.0 * width * height;
-        samples_px += 3.0 * width * height;
-        holes += double(e.holes);
-        interior_holes += double(e.interior_holes);
-        enclosed_holes += double(e.enclosed_holes);
-        ref_px += double(e.reference_terrain_pixels);
-        if (bound) bounds.push_back(*bound);
-        samples_csv.add_row({{"method", v.method},
-                             knob_cell,
-                             {"frame", frames[i]},
-                             {"frame_ms", ms},
-                             {"horizon_mean_px", e.horizon_mean_px},
-                             {"horizon_max_px", e.horizon_max_px},
-                             {"horizon_columns", e.horizon_columns},
-                             {"depth_rel_p95", g6(e.depth_rel_p95)},
-                             {"depth_rel_max", g6(e.depth_rel_max)},
-                             {"psnr_db", e.psnr_db},
-                             {"holes", e.holes},
-                             {"interior_holes", e.interior_holes},
-                             {"enclosed_holes", e.enclosed_holes},
-                             {"reference_terrain_px", e.reference_terrain_pixels},
-                             bound ? stats::Cell("bound_px", *bound) : stats::Cell("bound_px", std::string())});
+        stats::LumaImage luma = stats::luminance(img);
+        if (sampled) {
+          ++next_sample;
+          std::optional<session::TemporalSample> pair;
+          if (method_before.count(i - 1))
+            pair = session::TemporalSample{
+                frames[i - 1], frames[i] * s.time_step_s,
+                stats::temporal_error(method_before[i - 1], luma, reference_luma[i - 1], reference_luma[i])};
+          method_before.erase(i - 1);
+          std::vector<stats::Cell> cells = {{"method", v.method}, knob_cell, {"frame", frames[i]}, {"frame_ms", ms}};
+          for (auto& c : samples.add(stats::image_error(img, reference[i], camera),
+                                     method->error_bound_px(camera, height), pair))
+            cells.push_back(std::move(c));
+          samples_csv.add_row(cells);
+        }
+        if (before_pos.count(i)) method_before[i] = std::move(luma);
       }
       progress.step(label, i + 1, int(frames.size()));
     }
-    const int n = int(sample_pos.size());
     row.frames = int(frames.size());
     row.frame_ms_median = stats::percentiles(frame_ms).median;
     row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
@@ -415,22 +410,13 @@ int run(const Args& args) {
     row.primitives_median = stats::percentiles(prims).median;
     row.draw_calls_median = stats::percentiles(draws).median;
     row.upload_bytes_median = stats::percentiles(uploads).median;
-    row.error_samples = n;
-    row.horizon_mean_px = n ? horizon_sum / n : 0.0;
-    row.depth_rel_p95 = stats::percentiles(depth_p95).median;
-    row.psnr_db = stats::psnr_db_from_mse(samples_px > 0 ? sq_sum / samples_px : 0.0, samples_px);
-    row.holes_mean = n ? holes / n : 0.0;
-    row.interior_holes_mean = n ? interior_holes / n : 0.0;
-    row.enclosed_holes_mean = n ? enclosed_holes / n : 0.0;
-    row.hole_fraction = ref_px > 0 ? holes / ref_px : 0.0;
-    if (!bounds.empty() && int(bounds.size()) == n) {
-      row.bound_px_median = stats::percentiles(bounds).median;
-      row.bound_px_max = stats::percentiles(bounds).max;
-    }
+    samples.finish(row);
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%-36s %d frames: median %.2f ms, p95 %.2f ms, horizon mean %.3f px, max %.0f px (%.1f s)",
+    std::snprintf(buf, sizeof buf,
+                  "%-36s %d frames: median %.2f ms, p95 %.2f ms, horizon mean %.3f px, max %.0f px, temporal "
+                  "%.3f (%.1f s)",
                   label.c_str(), row.frames, row.frame_ms_median, row.frame_ms_p95, row.horizon_mean_px,
-                  row.horizon_max_px, ms_since(t_variant) / 1000.0);
+                  row.horizon_max_px, row.temporal_error_mean, ms_since(t_variant) / 1000.0);
     progress.line(buf);
     rows.push_back(row);
   }
@@ -466,6 +452,7 @@ int run(const Args& args) {
   c.time_step_s = s.time_step_s;
   c.frame_indices = frames;
   for (int p : sample_pos) c.sample_indices.push_back(frames[p]);
+  for (int p : before_pos) c.temporal_before_indices.push_back(frames[p]);
   c.sweep = args.sweep;
   c.wall_s = ms_since(start) / 1000.0;
 
@@ -475,11 +462,14 @@ int run(const Args& args) {
                                           s.name + " / " + std::to_string(width) + "x" + std::to_string(height) +
                                               " / FOV " + std::to_string(int(std::lround(c.fov_y_deg))) + " / " +
                                               c.gl_renderer);
+  const bool plotted_temporal = plot_temporal_error(
+      (out / "temporal_error.png").string(), rows,
+      s.name + " / " + std::to_string(width) + "x" + std::to_string(height) + " / temporal error, default knobs");
   std::printf("ig bench: %s, %zu method/knob rows x %d frames at %dx%d, FOV %g, on %s in %.1f s\n", s.name.c_str(),
               rows.size(), c.frames, width, height, c.fov_y_deg, c.gl_renderer.c_str(), ms_since(start) / 1000.0);
-  std::printf("ig bench: outputs in %s (results.csv, results.md, frames.csv, samples.csv%s)\n",
-              out.string().c_str(), plotted ? ", error_vs_time.png" : "");
-  return plotted ? 0 : 1;
+  std::printf("ig bench: outputs in %s (results.csv, results.md, frames.csv, samples.csv%s%s)\n",
+              out.string().c_str(), plotted ? ", error_vs_time.png" : "", plotted_temporal ? ", temporal_error.png" : "");
+  return plotted && plotted_temporal ? 0 : 1;
 }
 
 }  // namespace
