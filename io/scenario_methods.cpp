@@ -59,18 +59,32 @@ void parse_method_options(const json& render, const std::string& path, RenderSpe
     check_keys(render[name], p, keys);
     return &render[name];
   };
-  if (const json* j = section("roam", {"tau_px"})) r.roam.tau_px = knob(*j, child(path, "roam"), "tau_px", r.roam.tau_px);
-  if (const json* j = section("quadtree", {"c1", "c2"})) {
+  // Every baseline's horizon_culling: on or off (options/method_options.h).
+  auto culling = [&](const json& j, const char* name, bool& on) {
+    if (j.contains("horizon_culling")) on = get_bool(j["horizon_culling"], child(child(path, name), "horizon_culling"));
+  };
+  if (const json* j = section("roam", {"tau_px", "horizon_culling"})) {
+    r.roam.tau_px = knob(*j, child(path, "roam"), "tau_px", r.roam.tau_px);
+    culling(*j, "roam", r.roam.horizon_culling);
+  }
+  if (const json* j = section("quadtree", {"c1", "c2", "horizon_culling"})) {
     const std::string p = child(path, "quadtree");
     r.quadtree.c1 = knob(*j, p, "c1", r.quadtree.c1);
     if (j->contains("c2")) r.quadtree.c2 = get_number_in((*j)["c2"], child(p, "c2"), 0.0, options::kMaxBaselineKnob);
+    culling(*j, "quadtree", r.quadtree.horizon_culling);
   }
-  if (const json* j = section("geomipmap", {"tau_px"}))
+  if (const json* j = section("geomipmap", {"tau_px", "horizon_culling"})) {
     r.geomipmap.tau_px = knob(*j, child(path, "geomipmap"), "tau_px", r.geomipmap.tau_px);
-  if (const json* j = section("chunked", {"tau_px"}))
+    culling(*j, "geomipmap", r.geomipmap.horizon_culling);
+  }
+  if (const json* j = section("chunked", {"tau_px", "horizon_culling"})) {
     r.chunked.tau_px = knob(*j, child(path, "chunked"), "tau_px", r.chunked.tau_px);
-  if (const json* j = section("cdlod", {"lod0_range"}))
+    culling(*j, "chunked", r.chunked.horizon_culling);
+  }
+  if (const json* j = section("cdlod", {"lod0_range", "horizon_culling"})) {
     r.cdlod.lod0_range = knob(*j, child(path, "cdlod"), "lod0_range", r.cdlod.lod0_range);
+    culling(*j, "cdlod", r.cdlod.horizon_culling);
+  }
 }
 
 }  // namespace ig::io::scenario_json

@@ -29,6 +29,10 @@ struct BenchRow {
   double draw_calls_median = 0.0, upload_bytes_median = 0.0;
   // Process CPU time per frame (all threads, llvmpipe's rasteriser included).
   double cpu_ms_median = 0.0;
+  double cores_median = 0.0;  // per frame CPU / wall: cores the frame keeps busy
+  // Boxes (blocks, chunks, nodes, triangle groups, clusters) left out by
+  // horizon culling per frame (the method's hidden_boxes column; 0 without).
+  double hidden_boxes_median = 0.0;
   int error_samples = 0;
   double horizon_mean_px = 0.0;  // mean over samples of each frame's column mean
   double horizon_max_px = 0.0;   // max over samples

@@ -75,6 +75,7 @@ struct Args {
   int error_samples = 10;
   std::optional<double> match_px;
   std::vector<std::string> skip_passes;  // --skip-pass (twolevel cost breakdown)
+  std::string horizon_culling;           // --horizon-culling on|off for every method ("": the scenario's)
   std::string shader_dir;
   std::string out_dir;
   std::string command_line;  // as typed, for the report
@@ -141,6 +142,11 @@ Args parse_args(const std::vector<std::string>& a) {
                  "count); repeatable. The images are then wrong on purpose")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->expected(1)->allow_extra_args(false)
       ->option_text("NAME");
+  app.add_option("--horizon-culling", args.horizon_culling,
+                 "on or off for every method: what each draws behind nearer terrain is left out (default: the "
+                 "scenario's, on)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->option_text("on|off");
   add_shader_dir_option(app, args.shader_dir);
   app.add_option("--out", args.out_dir, "output folder (default out/<scenario>_bench)")->option_text("DIR");
   parse_command_line(app, a);
@@ -284,6 +290,7 @@ int run(const Args& args) {
   const int width = s.render.width, height = s.render.height;
   render::MethodOptions method_options = s.render.method_options();
   method_options.twolevel.skip_passes = args.skip_passes;
+  if (!args.horizon_culling.empty()) method_options.set_horizon_culling(args.horizon_culling == "on");
 
   const std::vector<int> frames = spread_frames(runner.frame_count(), args.frames);
   const std::vector<int> sample_pos = sample_positions(int(frames.size()), args.error_samples);
@@ -344,7 +351,7 @@ int run(const Args& args) {
     const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
 
     renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
-    std::vector<double> frame_ms, cpu_ms, lod_ms, triangles, vs, fs, prims, draws, uploads;
+    std::vector<double> frame_ms, cpu_ms, cores, hidden, lod_ms, triangles, vs, fs, prims, draws, uploads;
     session::BenchSamples samples(width, height);
     std::map<int, stats::LumaImage> method_before;  // the method's images of the frames before samples
     size_t next_sample = 0;
@@ -357,6 +364,8 @@ int run(const Args& args) {
       const double ms = ms_since(tf);
       frame_ms.push_back(ms);
       cpu_ms.push_back(cpu);
+      cores.push_back(ms > 0.0 ? cpu / ms : 0.0);
+      hidden.push_back(vr.method.column("hidden_boxes"));
       lod_ms.push_back(vr.timings.lod_ms);
       triangles.push_back(double(vr.method.triangles));
       vs.push_back(double(vr.total.vs_invocations));
@@ -372,7 +381,8 @@ int run(const Args& args) {
                                             {"lod_ms", vr.timings.lod_ms},
                                             {"terrain_ms", vr.timings.terrain_ms},
                                             {"sky_ms", vr.timings.sky_ms},
-                                            {"triangles", vr.method.triangles}};
+                                            {"triangles", vr.method.triangles},
+                                            {"hidden_boxes", hidden.back()}};
       session::append_work_columns(frame_row, vr, /*per_pass=*/false);
       frames_csv.add_row(frame_row);
       const bool sampled = next_sample < sample_pos.size() && sample_pos[next_sample] == i;
@@ -404,6 +414,8 @@ int run(const Args& args) {
     row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
     row.lod_ms_median = stats::percentiles(lod_ms).median;
     row.cpu_ms_median = stats::percentiles(cpu_ms).median;
+    row.cores_median = stats::percentiles(cores).median;
+    row.hidden_boxes_median = stats::percentiles(hidden).median;
     row.triangles_median = stats::percentiles(triangles).median;
     row.vs_invocations_median = stats::percentiles(vs).median;
     row.fs_invocations_median = stats::percentiles(fs).median;

@@ -42,6 +42,8 @@ class HorizonCulling {
   // (the near plane's neighbourhood) are never hidden. Returns how many are.
   int mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m, const std::vector<Box>& boxes,
                   std::vector<std::uint8_t>& hidden);
+  // The floors in use, for occluders that change per frame (lod/drawn_surface_occlusion.h).
+  TerrainFloors& floors() { return floors_; }
 
  private:
   // A rectangle's directions seen from the eye, in pseudo-angle units [0, 4)

@@ -15,20 +15,20 @@ constexpr int Q = lod::kChunkQuads;
 constexpr int kMaxLods = 16;  // shaders/cdlod.vert's uniform arrays
 }  // namespace
 
-CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range)
+CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, options::CdlodOptions options)
     : scene_(scene),
-      lod0_range_(lod0_range),
+      lod0_range_(options.lod0_range),
       program_(shader_dir, "cdlod.vert", scene.shading_stages({"terrain.frag"})),
       tree_(scene.heightfield()),
       mesh_(Q) {
-  if (!(lod0_range > 0.0) || !std::isfinite(lod0_range))
+  if (!(lod0_range_ > 0.0) || !std::isfinite(lod0_range_))
     throw std::invalid_argument("cdlod: lod0_range must be a positive number of samples, got " +
-                                std::to_string(lod0_range));
+                                std::to_string(lod0_range_));
   if (tree_.depth() >= kMaxLods)
     throw std::invalid_argument("cdlod: the DEM needs " + std::to_string(tree_.depth() + 1) + " LODs, at most " +
                                 std::to_string(kMaxLods) + " are supported");
   const auto& hf = scene.heightfield();
-  ranges_.lod0_range_m = lod0_range * std::sqrt(hf.spacing_x_m * hf.spacing_y_m);
+  ranges_.lod0_range_m = lod0_range_ * std::sqrt(hf.spacing_x_m * hf.spacing_y_m);
   ranges_.top_lod = tree_.depth();
 
   for (const lod::ChunkNode& n : tree_.nodes()) {
@@ -38,14 +38,27 @@ CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_di
                                       n.stride);
     quadrant_triangles_.push_back(t);
   }
+  if (options.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(hf);
 }
 
 std::vector<std::string> CdlodMethod::column_names() const {
-  return {"nodes_drawn", "quarters_drawn", "lod_min", "lod_max"};
+  return {"nodes_drawn", "quarters_drawn", "lod_min", "lod_max", "hidden_boxes"};
 }
 
 lod::SceneRequests CdlodMethod::update(const Camera& camera) {
   areas_ = select(camera);
+  hidden_boxes_ = 0;
+  if (occlusion_)
+    hidden_boxes_ = occlusion_->remove_hidden(camera.position, camera.earth_radius_m, 10.0 * camera.near_m, areas_,
+                                              [&](const lod::CdlodArea& a) {
+                                                lod::HorizonCulling::Box b;
+                                                const lod::ChunkNode& n = tree_.node(a.node);
+                                                if (a.quadrant < 0)
+                                                  tree_.box(n, b.lo, b.hi);
+                                                else
+                                                  tree_.quadrant_box(n, a.quadrant, b.lo, b.hi);
+                                                return b;
+                                              });
   return {};
 }
 
@@ -99,7 +112,8 @@ MethodFrameStats CdlodMethod::draw(const Camera& camera, const gl::RenderTarget&
   stats.columns = {{"nodes_drawn", double(areas_.size() - size_t(quarters))},
                    {"quarters_drawn", double(quarters)},
                    {"lod_min", areas_.empty() ? 0.0 : double(lmin)},
-                   {"lod_max", double(lmax)}};
+                   {"lod_max", double(lmax)},
+                   {"hidden_boxes", double(hidden_boxes_)}};
   return stats;
 }
 

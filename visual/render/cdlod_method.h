@@ -14,11 +14,13 @@
 // bound (error_bound_px) uses the measured per-node errors.
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "gl/grid_mesh.h"
 #include "gl/shader_program.h"
 #include "lod/cdlod_selection.h"
+#include "lod/drawn_surface_occlusion.h"
 #include "lod/chunk_quadtree.h"
 #include "options/method_options.h"
 #include "render/terrain_method.h"
@@ -27,10 +29,10 @@ namespace ig::render {
 
 class CdlodMethod final : public TerrainMethod {
  public:
-  CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, options::CdlodOptions options = {})
-      : CdlodMethod(scene, shader_dir, options.lod0_range) {}
   // Throws std::invalid_argument unless lod0_range > 0 (finite).
-  CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range);
+  CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, options::CdlodOptions options = {});
+  CdlodMethod(const TerrainScene& scene, const std::string& shader_dir, double lod0_range)
+      : CdlodMethod(scene, shader_dir, options::CdlodOptions{lod0_range}) {}
   CdlodMethod(const CdlodMethod&) = delete;
   CdlodMethod& operator=(const CdlodMethod&) = delete;
 
@@ -61,6 +63,8 @@ class CdlodMethod final : public TerrainMethod {
   std::vector<std::array<int, 4>> quadrant_triangles_;  // per node
   gl::GridMesh mesh_;  // the one Q x Q grid, drawn whole or a quarter at a time
   std::vector<lod::CdlodArea> areas_;  // the last update's selection
+  std::unique_ptr<lod::DrawnSurfaceOcclusion> occlusion_;  // null: horizon culling off
+  int hidden_boxes_ = 0;
 };
 
 }  // namespace ig::render

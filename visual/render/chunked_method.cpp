@@ -15,8 +15,9 @@ static_assert((1 << kLog2Q) == Q);
 constexpr float kSkirtMarginM = 1.0f;
 }  // namespace
 
-ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
-    : TauMethod("chunked", scene, shader_dir, "chunked.vert", tau_px), tree_(scene.heightfield()) {
+ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, options::ChunkedOptions options)
+    : TauMethod("chunked", scene, shader_dir, "chunked.vert", options.tau_px, options.horizon_culling),
+      tree_(scene.heightfield()) {
   // Vertices (x, y, skirt side + 1 or 0, pad): the surface grid, then each
   // side's edge again as the skirt's lower edge.
   std::vector<std::int16_t> verts;
@@ -59,7 +60,7 @@ ChunkedMethod::ChunkedMethod(const TerrainScene& scene, const std::string& shade
 }
 
 std::vector<std::string> ChunkedMethod::column_names() const {
-  return {"chunks_drawn", "level_min", "level_max", "skirt_triangles"};
+  return {"chunks_drawn", "level_min", "level_max", "skirt_triangles", "hidden_boxes"};
 }
 
 namespace {
@@ -83,6 +84,12 @@ void select_from(const lod::ChunkQuadtree& tree, int k, const Camera& camera, co
 
 lod::SceneRequests ChunkedMethod::update(const Camera& camera) {
   drawn_ = select(camera);
+  // After the skirts: their depth follows every chunk selected, hidden or not.
+  remove_hidden(camera, drawn_, [&](const DrawnChunk& d) {
+    lod::HorizonCulling::Box b;
+    tree_.box(tree_.node(d.node), b.lo, b.hi);
+    return b;
+  });
   return {};
 }
 
@@ -146,7 +153,8 @@ MethodFrameStats ChunkedMethod::draw(const Camera& camera, const gl::RenderTarge
   stats.columns = {{"chunks_drawn", double(drawn_.size())},
                    {"level_min", drawn_.empty() ? 0.0 : double(lmin)},
                    {"level_max", double(lmax)},
-                   {"skirt_triangles", double(skirt_triangles)}};
+                   {"skirt_triangles", double(skirt_triangles)},
+                   {"hidden_boxes", double(hidden_boxes())}};
   return stats;
 }
 

@@ -26,10 +26,10 @@ namespace ig::render {
 
 class ChunkedMethod final : public TauMethod {
  public:
-  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, options::ChunkedOptions options = {})
-      : ChunkedMethod(scene, shader_dir, options.tau_px) {}
   // Throws std::invalid_argument unless tau_px > 0 (finite).
-  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px);
+  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, options::ChunkedOptions options = {});
+  ChunkedMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
+      : ChunkedMethod(scene, shader_dir, options::ChunkedOptions{tau_px}) {}
   ChunkedMethod(const ChunkedMethod&) = delete;
   ChunkedMethod& operator=(const ChunkedMethod&) = delete;
 

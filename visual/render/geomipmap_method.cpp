@@ -34,8 +34,10 @@ void strip_box(const terrain::Heightfield& hf, const lod::GeoMipBlock& b, int si
 
 }  // namespace
 
-GeoMipMapMethod::GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
-    : TauMethod("geomipmap", scene, shader_dir, "terrain_grid.vert", tau_px), blocks_(scene.heightfield()) {
+GeoMipMapMethod::GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir,
+                                 options::GeoMipMapOptions options)
+    : TauMethod("geomipmap", scene, shader_dir, "terrain_grid.vert", options.tau_px, options.horizon_culling),
+      blocks_(scene.heightfield()) {
   std::vector<std::int16_t> verts;
   for (int j = 0; j <= N; ++j)
     for (int i = 0; i <= N; ++i) verts.insert(verts.end(), {std::int16_t(i), std::int16_t(j)});
@@ -44,11 +46,18 @@ GeoMipMapMethod::GeoMipMapMethod(const TerrainScene& scene, const std::string& s
 }
 
 std::vector<std::string> GeoMipMapMethod::column_names() const {
-  return {"blocks_drawn", "blocks_stitched", "level_min", "level_max", "level_mean"};
+  return {"blocks_drawn", "blocks_stitched", "level_min", "level_max", "level_mean", "hidden_boxes"};
 }
 
 lod::SceneRequests GeoMipMapMethod::update(const Camera& camera) {
   selection_ = select(camera);
+  // After the levels: a visible block's stitching depends on its neighbours, hidden or not.
+  const auto& hf = scene_.heightfield();
+  remove_hidden(camera, selection_.drawn, [&](const DrawnBlock& d) {
+    lod::HorizonCulling::Box b;
+    block_box(hf, blocks_.block(d.bx, d.by), b.lo, b.hi);
+    return b;
+  });
   return {};
 }
 
@@ -129,7 +138,8 @@ MethodFrameStats GeoMipMapMethod::draw(const Camera& camera, const gl::RenderTar
                    {"blocks_stitched", double(stitched)},
                    {"level_min", drawn.empty() ? 0.0 : double(lmin)},
                    {"level_max", double(lmax)},
-                   {"level_mean", drawn.empty() ? 0.0 : lsum / n}};
+                   {"level_mean", drawn.empty() ? 0.0 : lsum / n},
+                   {"hidden_boxes", double(hidden_boxes())}};
   return stats;
 }
 

@@ -21,10 +21,10 @@ namespace ig::render {
 
 class GeoMipMapMethod final : public TauMethod {
  public:
-  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, options::GeoMipMapOptions options = {})
-      : GeoMipMapMethod(scene, shader_dir, options.tau_px) {}
   // Throws std::invalid_argument unless tau_px > 0 (finite).
-  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px);
+  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, options::GeoMipMapOptions options = {});
+  GeoMipMapMethod(const TerrainScene& scene, const std::string& shader_dir, double tau_px)
+      : GeoMipMapMethod(scene, shader_dir, options::GeoMipMapOptions{tau_px}) {}
   GeoMipMapMethod(const GeoMipMapMethod&) = delete;
   GeoMipMapMethod& operator=(const GeoMipMapMethod&) = delete;
 

@@ -69,9 +69,21 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, TerrainScene
     if (knob) o.c1 = *knob;
     return std::make_unique<QuadtreeMethod>(scene, shader_dir, o);
   }
-  if (name == "geomipmap") return std::make_unique<GeoMipMapMethod>(scene, shader_dir, knob.value_or(options.geomipmap.tau_px));
-  if (name == "chunked") return std::make_unique<ChunkedMethod>(scene, shader_dir, knob.value_or(options.chunked.tau_px));
-  if (name == "cdlod") return std::make_unique<CdlodMethod>(scene, shader_dir, knob.value_or(options.cdlod.lod0_range));
+  if (name == "geomipmap") {
+    options::GeoMipMapOptions o = options.geomipmap;
+    if (knob) o.tau_px = *knob;
+    return std::make_unique<GeoMipMapMethod>(scene, shader_dir, o);
+  }
+  if (name == "chunked") {
+    options::ChunkedOptions o = options.chunked;
+    if (knob) o.tau_px = *knob;
+    return std::make_unique<ChunkedMethod>(scene, shader_dir, o);
+  }
+  if (name == "cdlod") {
+    options::CdlodOptions o = options.cdlod;
+    if (knob) o.lod0_range = *knob;
+    return std::make_unique<CdlodMethod>(scene, shader_dir, o);
+  }
   throw_unknown(name);
 }
 

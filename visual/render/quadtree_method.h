@@ -6,10 +6,12 @@
 // coarser neighbours dropped (lod/quadtree_tessellator.h,
 // docs/baselines.md). Drawn with level0.vert and the shared shading.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "lod/drawn_surface_occlusion.h"
 #include "lod/quadtree_tessellator.h"
 #include "render/sample_triangle_stream.h"
 #include "render/terrain_method.h"
@@ -40,6 +42,8 @@ class QuadtreeMethod final : public TerrainMethod {
   QuadtreeOptions options_;
   lod::QuadtreeTessellator tess_;
   lod::QuadtreeSelection selection_;  // update() -> draw()
+  std::unique_ptr<lod::DrawnSurfaceOcclusion> occlusion_;  // null: horizon culling off
+  int hidden_boxes_ = 0;  // triangle groups hidden this frame
   SampleTriangleStream stream_;
   Frustum frustum_{};
   lod::BoxInView in_view_;

@@ -15,10 +15,11 @@ RoamMethod::RoamMethod(const TerrainScene& scene, const std::string& shader_dir,
                                 ")");
   if (options_.viewport_height_px < 1) options_.viewport_height_px = 1024;
   in_view_ = [this](const glm::dvec3& lo, const glm::dvec3& hi) { return frustum_.intersects_box(lo, hi); };
+  if (options_.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield());
 }
 
 std::vector<std::string> RoamMethod::column_names() const {
-  return {"splits", "forced_splits", "bintree_nodes", "culled_leaves"};
+  return {"splits", "forced_splits", "bintree_nodes", "culled_leaves", "hidden_boxes"};
 }
 
 void RoamMethod::set_viewport(int, int height_px) {
@@ -30,6 +31,12 @@ lod::SceneRequests RoamMethod::update(const Camera& camera) {
   frustum_ = frustum_of(camera);
   selection_ = tess_.select(camera.position, options_.tau_px, pixels_per_radian(camera, options_.viewport_height_px),
                             in_view_, std::max(camera.near_m, 1e-3), std::move(selection_));
+  hidden_boxes_ = 0;
+  if (occlusion_) {
+    hidden_boxes_ = occlusion_->cull_triangles(camera.position, camera.earth_radius_m, 10.0 * camera.near_m,
+                                               selection_.vertices);
+    selection_.stats.triangles = (long long)selection_.vertices.size() / 3;
+  }
   update_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return {};
 }
@@ -40,7 +47,8 @@ MethodFrameStats RoamMethod::draw(const Camera& camera, const gl::RenderTarget&)
                             {{"splits", double(s.splits)},
                              {"forced_splits", double(s.forced_splits)},
                              {"bintree_nodes", double(s.nodes)},
-                             {"culled_leaves", double(s.culled)}});
+                             {"culled_leaves", double(s.culled)},
+                             {"hidden_boxes", double(hidden_boxes_)}});
 }
 
 std::optional<double> RoamMethod::error_bound_px(const Camera& camera, int viewport_height_px) const {

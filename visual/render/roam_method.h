@@ -5,10 +5,12 @@
 // (lod/roam_tessellator.h, docs/baselines.md). One triangle list of DEM
 // sample indices per frame, drawn with level0.vert and the shared shading.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "lod/drawn_surface_occlusion.h"
 #include "lod/roam_tessellator.h"
 #include "render/sample_triangle_stream.h"
 #include "render/terrain_method.h"
@@ -40,6 +42,8 @@ class RoamMethod final : public TerrainMethod {
   RoamOptions options_;
   lod::RoamTessellator tess_;
   lod::RoamSelection selection_;  // update() -> draw()
+  std::unique_ptr<lod::DrawnSurfaceOcclusion> occlusion_;  // null: horizon culling off
+  int hidden_boxes_ = 0;  // triangle groups hidden this frame
   SampleTriangleStream stream_;
   Frustum frustum_{};
   lod::BoxInView in_view_;

@@ -13,10 +13,12 @@ double checked_tau(const std::string& name, double tau_px) {
 }  // namespace
 
 TauMethod::TauMethod(const std::string& name, const TerrainScene& scene, const std::string& shader_dir,
-                     const std::string& vertex_shader, double tau_px)
+                     const std::string& vertex_shader, double tau_px, bool horizon_culling)
     : scene_(scene),
       tau_px_(checked_tau(name, tau_px)),
-      program_(shader_dir, vertex_shader, scene.shading_stages({"terrain.frag"})) {}
+      program_(shader_dir, vertex_shader, scene.shading_stages({"terrain.frag"})) {
+  if (horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield());
+}
 
 void TauMethod::set_viewport(int, int height_px) {
   if (height_px > 0) viewport_h_ = height_px;

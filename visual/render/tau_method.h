@@ -4,11 +4,14 @@
 // knob, pixels at the viewport's height), drawn one piece at a time with one
 // program placed by its origin sample, eye-relative in double then float.
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gl/shader_program.h"
 #include "gl/uniform.h"
+#include "lod/drawn_surface_occlusion.h"
 #include "render/terrain_method.h"
 
 namespace ig::render {
@@ -22,7 +25,17 @@ class TauMethod : public TerrainMethod {
   // Throws std::invalid_argument "<name>: tau_px must be ..." unless tau_px
   // is positive and finite.
   TauMethod(const std::string& name, const TerrainScene& scene, const std::string& shader_dir,
-            const std::string& vertex_shader, double tau_px);
+            const std::string& vertex_shader, double tau_px, bool horizon_culling);
+
+  // Horizon culling over this frame's drawn pieces (box_of(piece): its box):
+  // removes the hidden ones; hidden_boxes() counts them. Nothing when off.
+  template <class Piece, class BoxOf>
+  void remove_hidden(const Camera& camera, std::vector<Piece>& pieces, BoxOf box_of) {
+    hidden_boxes_ = occlusion_ ? occlusion_->remove_hidden(camera.position, camera.earth_radius_m,
+                                                           10.0 * camera.near_m, pieces, box_of)
+                               : 0;
+  }
+  int hidden_boxes() const { return hidden_boxes_; }
 
   // Pixels per radian for the viewport of the next update.
   double viewport_pixels_per_radian(const Camera& camera) const { return pixels_per_radian(camera, viewport_h_); }
@@ -41,6 +54,8 @@ class TauMethod : public TerrainMethod {
 
  private:
   int viewport_h_ = 1024;  // until the first set_viewport()
+  std::unique_ptr<lod::DrawnSurfaceOcclusion> occlusion_;  // null: horizon culling off
+  int hidden_boxes_ = 0;
 };
 
 }  // namespace ig::render

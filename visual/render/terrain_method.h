@@ -48,6 +48,12 @@ struct MethodFrameStats {
   std::string passes;       // which passes ran, e.g. "terrain" or "level1+band+level0"
   // Method-specific per-frame columns, same names and order every frame.
   std::vector<std::pair<std::string, double>> columns;
+  // The column of that name, or 0 when the method has none.
+  double column(std::string_view name) const {
+    for (const auto& [n, v] : columns)
+      if (n == name) return v;
+    return 0.0;
+  }
 };
 
 class TerrainMethod {

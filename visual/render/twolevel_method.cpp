@@ -51,7 +51,7 @@ std::vector<std::string> TwoLevelMethod::pass_names() const {
 
 std::vector<std::string> TwoLevelMethod::column_names() const {
   return {"level1_n", "level1_ratio", "level0_tris", "level1_tris", "band_tris", "band_w", "e_x", "e_y", "e_hit",
-          "level0_hidden_clusters", "level1_hidden_blocks", "level1_held", "level1_far"};
+          "level0_hidden_clusters", "level1_hidden_blocks", "hidden_boxes", "level1_held", "level1_far"};
 }
 
 lod::SceneRequests TwoLevelMethod::update(const Camera& camera) {
@@ -111,6 +111,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
                    {"e_hit", sel.look_at.hit ? 1.0 : 0.0},
                    {"level0_hidden_clusters", double(sel.level0_hidden_clusters)},
                    {"level1_hidden_blocks", double(sel.level1_hidden_blocks)},
+                   {"hidden_boxes", double(sel.level0_hidden_clusters + sel.level1_hidden_blocks)},
                    {"level1_held", sel.held ? 1.0 : 0.0},
                    {"level1_far", sel.far ? 1.0 : 0.0}};
   return stats;
