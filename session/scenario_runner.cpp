@@ -259,6 +259,7 @@ void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult
     row.emplace_back(p.name + "_fs", n(p.fs_invocations));
     row.emplace_back(p.name + "_prims", n(p.primitives));
     row.emplace_back(p.name + "_draws", n(p.draw_calls));
+    row.emplace_back(p.name + "_passed", n(p.samples_passed));
   }
 }
 

@@ -71,7 +71,8 @@ std::unique_ptr<gl::RenderTarget> make_frame_target(const io::RenderSpec& render
 
 // The frame's work counters as log columns: totals (vs_invocations,
 // fs_invocations, primitives, draw_calls, upload_bytes), then with per_pass
-// <pass>_vs, <pass>_fs, <pass>_prims, <pass>_draws for every pass.
+// <pass>_vs, <pass>_fs, <pass>_prims, <pass>_draws, <pass>_passed (samples
+// that passed the depth test) for every pass.
 void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult& view, bool per_pass);
 
 // One frames.csv row for a channel; wall_ms = pose + render + readback + present.

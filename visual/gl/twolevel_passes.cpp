@@ -61,7 +61,7 @@ TwoLevelDrawn TwoLevelPasses::draw(const lod::TwoLevelSelection& sel, const TwoL
   draw_level1(sel, ctx, drawn);
   const bool band_on = draw_band(sel, ctx, target, drawn);
   draw_level0(sel, ctx, target, band_on, drawn);
-  ctx.begin_pass("count");
+  ctx.begin_pass("count", false);
   count(target);
   return drawn;
 }
@@ -74,7 +74,7 @@ glm::vec3 relative(glm::ivec2 s, const TwoLevelDrawContext& ctx) {
 
 void TwoLevelPasses::draw_level1(const lod::TwoLevelSelection& sel, const TwoLevelDrawContext& ctx,
                                  TwoLevelDrawn& drawn) {
-  ctx.begin_pass("level1");
+  ctx.begin_pass("level1", true);
   if (sel.visible_blocks.empty() || skipped("level1")) return;
   grid_program_.use();
   ctx.bind_common(grid_program_);
@@ -105,7 +105,7 @@ bool TwoLevelPasses::draw_band(const lod::TwoLevelSelection& sel, const TwoLevel
   const bool band_on = sel.band_visible && !skipped("band");
   if (band_on) beta_.update(n, sel.band_w, options_.gaussian_beta);
   if (options_.band_inline) return band_on;  // Level0 marches the band itself: no target, no clear
-  ctx.begin_pass("band");
+  ctx.begin_pass("band", true);
   if (!band_target_ || band_target_->width() != target.width() || band_target_->height() != target.height())
     band_target_ = std::make_unique<RenderTarget>(target.width(), target.height(), GL_RGBA16F);
   if (!band_on) return false;  // Level0 ignores the band target (u_band_valid)
@@ -139,7 +139,7 @@ bool TwoLevelPasses::draw_band(const lod::TwoLevelSelection& sel, const TwoLevel
 void TwoLevelPasses::draw_level0(const lod::TwoLevelSelection& sel, const TwoLevelDrawContext& ctx,
                                  const RenderTarget& target, bool band_on, TwoLevelDrawn& drawn) {
   const int n = sel.n;
-  ctx.begin_pass("level0");
+  ctx.begin_pass("level0", true);
   target.bind();
   const glm::ivec2 eye_sample(int(std::floor(ctx.eye.x / ctx.spacing.x)), int(std::floor(ctx.eye.y / ctx.spacing.y)));
   if (band_target_) {

@@ -38,7 +38,8 @@ struct TwoLevelDrawContext {
   double near_m = 0.5, far_m = 300000.0;
   glm::dvec2 spacing{1.0};  // DEM sample spacing, metres
   std::function<void(const ShaderProgram&)> bind_common;  // the scene's textures and uniforms
-  std::function<void(std::string_view)> begin_pass;       // the work counters' pass
+  // The work counters' pass (count_samples false: the pass runs its own samples-passed queries).
+  std::function<void(std::string_view, bool count_samples)> begin_pass;
   std::function<void()> draw_block;                       // one Level1 block (kLevel1BlockQuads a side)
 };
 

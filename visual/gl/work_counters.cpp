@@ -4,8 +4,9 @@
 
 namespace ig::gl {
 namespace {
-constexpr std::array<GLenum, 3> kTargets = {GL_VERTEX_SHADER_INVOCATIONS, GL_FRAGMENT_SHADER_INVOCATIONS,
-                                            GL_PRIMITIVES_SUBMITTED};
+constexpr std::array<GLenum, 4> kTargets = {GL_VERTEX_SHADER_INVOCATIONS, GL_FRAGMENT_SHADER_INVOCATIONS,
+                                            GL_PRIMITIVES_SUBMITTED, GL_SAMPLES_PASSED};
+int queries_of(bool count_samples) { return count_samples ? 4 : 3; }
 }  // namespace
 
 WorkTally& work_tally() {
@@ -25,7 +26,7 @@ void PassRecorder::begin_frame() {
   used_ = 0;
 }
 
-void PassRecorder::begin(std::string_view pass) {
+void PassRecorder::begin(std::string_view pass, bool count_samples) {
   if (active_) end();
   int index = -1;
   for (size_t k = 0; k < names_.size(); ++k)
@@ -38,9 +39,10 @@ void PassRecorder::begin(std::string_view pass) {
   }
   Segment& s = segments_[used_];
   s.pass = index;
+  s.count_samples = count_samples;
   s.tally_at_begin = work_tally();
   if (supported_)
-    for (int q = 0; q < 3; ++q) glBeginQuery(kTargets[q], s.queries[q].id());
+    for (int q = 0; q < queries_of(count_samples); ++q) glBeginQuery(kTargets[q], s.queries[q].id());
   active_ = true;
 }
 
@@ -48,7 +50,7 @@ void PassRecorder::end() {
   if (!active_) return;
   Segment& s = segments_[used_];
   if (supported_)
-    for (int q = 0; q < 3; ++q) glEndQuery(kTargets[q]);
+    for (int q = 0; q < queries_of(s.count_samples); ++q) glEndQuery(kTargets[q]);
   s.tally_at_end = work_tally();
   ++used_;
   active_ = false;
@@ -62,11 +64,13 @@ std::vector<PassWork> PassRecorder::read() {
     const Segment& s = segments_[k];
     PassWork& w = out[s.pass];
     if (supported_) {
-      GLuint64 v[3] = {0, 0, 0};
-      for (int q = 0; q < 3; ++q) glGetQueryObjectui64v(s.queries[q].id(), GL_QUERY_RESULT, &v[q]);
+      GLuint64 v[4] = {0, 0, 0, 0};
+      for (int q = 0; q < queries_of(s.count_samples); ++q)
+        glGetQueryObjectui64v(s.queries[q].id(), GL_QUERY_RESULT, &v[q]);
       w.vs_invocations += v[0];
       w.fs_invocations += v[1];
       w.primitives += v[2];
+      w.samples_passed += v[3];
     }
     w.draw_calls += s.tally_at_end.draw_calls - s.tally_at_begin.draw_calls;
     w.bytes_uploaded += s.tally_at_end.bytes_uploaded - s.tally_at_begin.bytes_uploaded;

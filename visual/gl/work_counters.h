@@ -31,6 +31,11 @@ struct PassWork {
   std::uint64_t vs_invocations = 0;
   std::uint64_t fs_invocations = 0;
   std::uint64_t primitives = 0;  // primitives submitted by the pass's draws
+  // Samples that passed the depth test (an occlusion query): the fragments
+  // an early-z GPU shades in a pass without discard. llvmpipe's
+  // fs_invocations count every rasterized fragment, also those the early
+  // depth test then rejects, so they measure coverage, not shading.
+  std::uint64_t samples_passed = 0;
   std::uint64_t draw_calls = 0;
   std::uint64_t bytes_uploaded = 0;
 };
@@ -50,7 +55,10 @@ class PassRecorder {
   static bool supported();
 
   void begin_frame();
-  void begin(std::string_view pass);  // throws std::logic_error for a name not given at construction
+  // Throws std::logic_error for a name not given at construction. A pass that
+  // runs its own samples-passed queries opens with count_samples false (GL
+  // allows one active query per target); its samples_passed then reads 0.
+  void begin(std::string_view pass, bool count_samples = true);
   void end();
   // Per pass, in construction order (passes that did not run read 0).
   std::vector<PassWork> read();
@@ -65,7 +73,8 @@ class PassRecorder {
  private:
   struct Segment {
     int pass = 0;
-    std::array<Query, 3> queries;
+    bool count_samples = true;
+    std::array<Query, 4> queries;  // vertex and fragment invocations, primitives, samples passed
     WorkTally tally_at_begin, tally_at_end;
   };
   std::vector<std::string> names_;

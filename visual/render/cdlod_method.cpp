@@ -47,6 +47,17 @@ std::vector<std::string> CdlodMethod::column_names() const {
 
 lod::SceneRequests CdlodMethod::update(const Camera& camera) {
   areas_ = select(camera);
+  // Nearest node first, so the early depth test rejects what nearer areas hide.
+  std::vector<std::pair<double, lod::CdlodArea>> by_distance;
+  by_distance.reserve(areas_.size());
+  for (const lod::CdlodArea& a : areas_) {
+    glm::dvec3 lo, hi;
+    tree_.box(tree_.node(a.node), lo, hi);
+    by_distance.emplace_back(lod::box_distance(camera.position, lo, hi), a);
+  }
+  std::stable_sort(by_distance.begin(), by_distance.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (size_t k = 0; k < areas_.size(); ++k) areas_[k] = by_distance[k].second;
   hidden_boxes_ = 0;
   if (occlusion_)
     hidden_boxes_ = occlusion_->remove_hidden(camera.position, camera.earth_radius_m, 10.0 * camera.near_m, areas_,

@@ -119,6 +119,9 @@ std::vector<ChunkedMethod::DrawnChunk> ChunkedMethod::select(const Camera& camer
     const float far_coarse = n.level > kLog2Q ? coarse_error[size_t(n.level - kLog2Q)] : 0.0f;
     d.skirt_bottom_m = n.heights.min_m - far_coarse - kSkirtMarginM;
   }
+  // Nearest first, so the early depth test rejects what nearer chunks hide.
+  std::stable_sort(drawn.begin(), drawn.end(),
+                   [](const DrawnChunk& a, const DrawnChunk& b) { return a.distance_m < b.distance_m; });
   return drawn;
 }
 

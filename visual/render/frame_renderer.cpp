@@ -82,6 +82,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
     r.total.vs_invocations += p.vs_invocations;
     r.total.fs_invocations += p.fs_invocations;
     r.total.primitives += p.primitives;
+    r.total.samples_passed += p.samples_passed;
   }
   // Uploads in update() (outside every pass) count too.
   r.total.draw_calls = gl::work_tally().draw_calls - at_start.draw_calls;

@@ -102,6 +102,9 @@ GeoMipMapMethod::Selection GeoMipMapMethod::select(const Camera& camera) const {
       }
       sel.drawn.push_back(d);
     }
+  // Nearest first, so the early depth test rejects what nearer blocks hide.
+  std::stable_sort(sel.drawn.begin(), sel.drawn.end(),
+                   [](const DrawnBlock& a, const DrawnBlock& b) { return a.distance_m < b.distance_m; });
   return sel;
 }
 

@@ -107,8 +107,8 @@ class TerrainMethod {
   }
 
  protected:
-  void begin_pass(std::string_view name) {
-    if (passes_) passes_->begin(name);
+  void begin_pass(std::string_view name, bool count_samples = true) {
+    if (passes_) passes_->begin(name, count_samples);
   }
 
  private:

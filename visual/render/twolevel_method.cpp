@@ -93,7 +93,7 @@ MethodFrameStats TwoLevelMethod::draw(const Camera& camera, const gl::RenderTarg
   ctx.far_m = camera.far_m;
   ctx.spacing = {hf.spacing_x_m, hf.spacing_y_m};
   ctx.bind_common = [&](const gl::ShaderProgram& program) { scene_.bind_common(program, camera, windows_); };
-  ctx.begin_pass = [this](std::string_view pass) { begin_pass(pass); };
+  ctx.begin_pass = [this](std::string_view pass, bool count_samples) { begin_pass(pass, count_samples); };
   ctx.draw_block = [this] { block_mesh_.draw(); };
   const gl::TwoLevelDrawn drawn = passes_->draw(sel, ctx, target);
 

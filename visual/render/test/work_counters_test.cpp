@@ -7,6 +7,7 @@
 
 #include "gl/work_counters.h"
 #include "session/scenario_runner.h"
+#include "io/pose.h"
 #include "io/scenario.h"
 #include "render/terrain_method.h"
 
@@ -75,9 +76,45 @@ TEST(WorkCounters, EveryMethodCountsItsWork) {
     EXPECT_EQ(sky.draw_calls, 1u) << method;
     EXPECT_EQ(sky.primitives, 1u) << method;
     EXPECT_GE(sky.fs_invocations, std::uint64_t(kW * kH - terrain_px)) << method;
+    // Drawn after the terrain against the far plane: only the uncovered
+    // pixels pass the depth test, the fragments an early-z GPU shades.
+    EXPECT_EQ(sky.samples_passed, std::uint64_t(kW * kH - terrain_px)) << method;
     // Every triangle the method says it submitted reached the pipeline.
     EXPECT_GE(v.total.primitives, std::uint64_t(v.method.triangles)) << method;
     EXPECT_EQ(sum_draws, v.total.draw_calls) << method;  // no draw outside a pass
+  }
+}
+
+// The sky shades only where no terrain is: nothing passes looking straight
+// down at the terrain, the sky's own pixels looking at the horizon. Every
+// method draws the terrain before the same sky pass.
+TEST(WorkCounters, SkyPassesOnlyWhereNoTerrainIs) {
+  for (const std::string method : {"twolevel", "reference", "geomipmap"}) {
+    auto scenario = ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json");
+    scenario.render.antialiasing = "off";  // depth as the passes left it
+    ScenarioRunner runner(scenario, options(method));
+    runner.render_frame(0);
+    auto& ch = runner.channels().front();
+    const double heading = ig::io::hpr_from_attitude(ch.camera.attitude).heading_deg;
+    for (const double pitch : {-89.0, 0.0}) {
+      ig::render::Camera camera = ch.camera;
+      camera.attitude = ig::io::attitude_from_hpr({heading, pitch, 0.0});
+      ig::render::ViewResult v;
+      for (int k = 0; k < 3; ++k) v = ch.renderer->render(camera, *ch.target);  // two-level settles its size
+      long long sky_px = 0;
+      for (float d : ch.target->read_depth()) sky_px += d == 0.0f;
+      const auto& sky = v.passes[v.passes.size() - 2];
+      ASSERT_EQ(sky.name, "sky");
+      std::printf("[sky] %-10s pitch %5.1f: sky px %lld, passed %llu, rasterized %llu of %d\n", method.c_str(), pitch,
+                  sky_px, (unsigned long long)sky.samples_passed, (unsigned long long)sky.fs_invocations, kW * kH);
+      if (pitch < 0.0) {
+        EXPECT_EQ(sky_px, 0) << method << ": looking down, the terrain should fill the view";
+      } else {
+        EXPECT_GT(sky_px, kW * kH / 10) << method << ": at the horizon, the sky should show";
+        EXPECT_LT(sky_px, kW * kH) << method;
+      }
+      EXPECT_EQ(sky.samples_passed, std::uint64_t(sky_px)) << method << ", pitch " << pitch;
+    }
   }
 }
 
