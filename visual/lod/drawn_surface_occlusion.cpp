@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "lod/level1_selection.h"
+
 namespace ig::lod {
 
 namespace {
@@ -23,17 +25,18 @@ constexpr float kNoFloor = -std::numeric_limits<float>::infinity();
 
 }  // namespace
 
-DrawnSurfaceOcclusion::DrawnSurfaceOcclusion(const terrain::Heightfield& hf, int cell_samples)
+DrawnSurfaceOcclusion::DrawnSurfaceOcclusion(const terrain::Heightfield& hf, const terrain::HeightPyramid& pyramid,
+                                             int cell_samples)
     : hf_(hf),
+      pyramid_(pyramid),
       cell_samples_(std::max(cell_samples, 1)),
       culling_(empty_floors(hf, std::max(cell_samples, 1)), glm::dvec2(hf.spacing_x_m, hf.spacing_y_m)) {}
 
 int DrawnSurfaceOcclusion::mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
                                        const std::vector<HorizonCulling::Box>& boxes,
-                                       std::vector<std::uint8_t>& hidden) {
+                                       std::vector<std::uint8_t>& hidden, double surface_at_eye_m) {
   hidden.assign(boxes.size(), 0);
-  for (const auto& b : boxes)  // the eye must be above what is drawn under it
-    if (eye.x >= b.lo.x && eye.x <= b.hi.x && eye.y >= b.lo.y && eye.y <= b.hi.y && !(eye.z > b.hi.z)) return 0;
+  if (!(eye.z > surface_at_eye_m)) return 0;  // the eye must be above what is drawn under it
 
   TerrainFloors& f = culling_.floors();
   std::fill(f.floor_m.begin(), f.floor_m.end(), std::numeric_limits<float>::infinity());
@@ -58,6 +61,14 @@ int DrawnSurfaceOcclusion::mark_hidden(const glm::dvec3& eye, double earth_radiu
   return culling_.mark_hidden(eye, earth_radius_m, min_distance_m, boxes, hidden);
 }
 
+double DrawnSurfaceOcclusion::dem_max_near(const glm::dvec3& eye, int radius_samples) const {
+  const int ci = int(std::floor(eye.x / hf_.spacing_x_m)), cj = int(std::floor(eye.y / hf_.spacing_y_m));
+  const int i0 = std::max(ci - radius_samples, 0), i1 = std::min(ci + 1 + radius_samples, hf_.width - 1);
+  const int j0 = std::max(cj - radius_samples, 0), j1 = std::min(cj + 1 + radius_samples, hf_.height - 1);
+  if (i0 > i1 || j0 > j1) return -std::numeric_limits<double>::infinity();  // off the DEM
+  return rect_minmax(pyramid_, i0, j0, i1, j1).hi;
+}
+
 int DrawnSurfaceOcclusion::cull_triangles(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
                                           std::vector<glm::u16vec2>& vertices) {
   const TerrainFloors& f = culling_.floors();
@@ -66,8 +77,13 @@ int DrawnSurfaceOcclusion::cull_triangles(const glm::dvec3& eye, double earth_ra
   const size_t triangles = vertices.size() / 3;
   group_of_triangle_.resize(triangles);
   const double sx = hf_.spacing_x_m, sy = hf_.spacing_y_m;
+  const glm::dvec2 eye_sample(eye.x / sx, eye.y / sy);
+  double surface_at_eye = -std::numeric_limits<double>::infinity();
   for (size_t t = 0; t < triangles; ++t) {
     const glm::u16vec2* v = &vertices[3 * t];
+    const glm::u16vec2 lo = glm::min(v[0], glm::min(v[1], v[2])), hi = glm::max(v[0], glm::max(v[1], v[2]));
+    if (eye_sample.x >= lo.x && eye_sample.x <= hi.x && eye_sample.y >= lo.y && eye_sample.y <= hi.y)
+      for (int k = 0; k < 3; ++k) surface_at_eye = std::max(surface_at_eye, double(hf_.at(v[k].x, v[k].y)));
     const int ci = std::min((int(v[0].x) + v[1].x + v[2].x) / (3 * cell_samples_), f.nx - 1);
     const int cj = std::min((int(v[0].y) + v[1].y + v[2].y) / (3 * cell_samples_), f.ny - 1);
     std::int32_t& g = group_of_cell_[size_t(cj) * f.nx + ci];
@@ -84,7 +100,7 @@ int DrawnSurfaceOcclusion::cull_triangles(const glm::dvec3& eye, double earth_ra
       box.hi = glm::max(box.hi, p);
     }
   }
-  const int count = mark_hidden(eye, earth_radius_m, min_distance_m, groups_, hidden_);
+  const int count = mark_hidden(eye, earth_radius_m, min_distance_m, groups_, hidden_, surface_at_eye);
   if (count == 0) return 0;
   size_t kept = 0;
   for (size_t t = 0; t < triangles; ++t) {

@@ -21,6 +21,7 @@
 #include <glm/gtc/type_precision.hpp>
 
 #include "lod/horizon_culling.h"
+#include "terrain/height_pyramid.h"
 #include "terrain/heightfield.h"
 
 namespace ig::lod {
@@ -28,21 +29,31 @@ namespace ig::lod {
 class DrawnSurfaceOcclusion {
  public:
   // Occluder cells of cell_samples x cell_samples grid cells over hf.
-  explicit DrawnSurfaceOcclusion(const terrain::Heightfield& hf, int cell_samples = 32);
+  // pyramid: hf's min/max pyramid (dem_max_near).
+  DrawnSurfaceOcclusion(const terrain::Heightfield& hf, const terrain::HeightPyramid& pyramid, int cell_samples = 32);
 
   // boxes: this frame's drawn pieces in terrain-local metres, lo.z at or
   // under the drawn surface over the footprint, hi.z at or over it.
-  // hidden[k] = 1 where boxes[k] is hidden from `eye` by the others; none
-  // while the eye is not above every box whose footprint holds it (it may be
-  // under the drawn surface). Boxes nearer than min_distance_m horizontally
-  // are never hidden. Returns how many are.
+  // surface_at_eye_m: at or over the drawn surface straight under the eye
+  // (-infinity where nothing is drawn there). hidden[k] = 1 where boxes[k]
+  // is hidden from `eye` by the others; none unless the eye is above that
+  // surface (a line from under it could leave through a back face). Boxes
+  // nearer than min_distance_m horizontally are never hidden. Returns how
+  // many are.
   int mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
-                  const std::vector<HorizonCulling::Box>& boxes, std::vector<std::uint8_t>& hidden);
+                  const std::vector<HorizonCulling::Box>& boxes, std::vector<std::uint8_t>& hidden,
+                  double surface_at_eye_m);
+
+  // The highest DEM sample within radius_samples of the eye's sample
+  // (horizontally; clamped to the DEM): over the drawn surface under the eye
+  // for a grid piece whose triangles span at most that many samples.
+  double dem_max_near(const glm::dvec3& eye, int radius_samples) const;
 
   // The same for a triangle list of DEM sample indices (3 per triangle,
   // heights from hf): triangles are grouped by the cell holding their
   // centroid, each group a box; the hidden groups' triangles are removed,
-  // the others keep their order. Returns the groups hidden.
+  // the others keep their order. The surface under the eye is bounded by the
+  // triangles over it. Returns the groups hidden.
   int cull_triangles(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
                      std::vector<glm::u16vec2>& vertices);
 
@@ -50,10 +61,10 @@ class DrawnSurfaceOcclusion {
   // box: the hidden pieces are removed, the others keep their order.
   template <class Piece, class BoxOf>
   int remove_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m, std::vector<Piece>& pieces,
-                    BoxOf box_of) {
+                    BoxOf box_of, double surface_at_eye_m) {
     boxes_.clear();
     for (const Piece& p : pieces) boxes_.push_back(box_of(p));
-    const int count = mark_hidden(eye, earth_radius_m, min_distance_m, boxes_, hidden_);
+    const int count = mark_hidden(eye, earth_radius_m, min_distance_m, boxes_, hidden_, surface_at_eye_m);
     if (count == 0) return 0;
     size_t kept = 0;
     for (size_t k = 0; k < pieces.size(); ++k)
@@ -64,6 +75,7 @@ class DrawnSurfaceOcclusion {
 
  private:
   const terrain::Heightfield& hf_;
+  const terrain::HeightPyramid& pyramid_;
   int cell_samples_;
   HorizonCulling culling_;
   // Per frame (cull_triangles): the group of each triangle, and per cell its

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -38,7 +39,7 @@ CdlodMethod::CdlodMethod(const TerrainScene& scene, const std::string& shader_di
                                       n.stride);
     quadrant_triangles_.push_back(t);
   }
-  if (options.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(hf);
+  if (options.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(hf, scene.height_pyramid());
 }
 
 std::vector<std::string> CdlodMethod::column_names() const {
@@ -59,17 +60,28 @@ lod::SceneRequests CdlodMethod::update(const Camera& camera) {
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   for (size_t k = 0; k < areas_.size(); ++k) areas_[k] = by_distance[k].second;
   hidden_boxes_ = 0;
-  if (occlusion_)
-    hidden_boxes_ = occlusion_->remove_hidden(camera.position, camera.earth_radius_m, 10.0 * camera.near_m, areas_,
-                                              [&](const lod::CdlodArea& a) {
-                                                lod::HorizonCulling::Box b;
-                                                const lod::ChunkNode& n = tree_.node(a.node);
-                                                if (a.quadrant < 0)
-                                                  tree_.box(n, b.lo, b.hi);
-                                                else
-                                                  tree_.quadrant_box(n, a.quadrant, b.lo, b.hi);
-                                                return b;
-                                              });
+  if (!occlusion_) return {};
+  const auto box_of = [&](const lod::CdlodArea& a) {
+    lod::HorizonCulling::Box b;
+    const lod::ChunkNode& n = tree_.node(a.node);
+    if (a.quadrant < 0)
+      tree_.box(n, b.lo, b.hi);
+    else
+      tree_.quadrant_box(n, a.quadrant, b.lo, b.hi);
+    return b;
+  };
+  // Under the eye: a node's triangles, morphing towards its parent's grid,
+  // span at most two quads of its stride.
+  int span = 0;
+  const glm::dvec3& p = camera.position;
+  for (const lod::CdlodArea& a : areas_) {
+    const auto b = box_of(a);
+    if (p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y)
+      span = std::max(span, 2 * tree_.node(a.node).stride);
+  }
+  const double surface = span > 0 ? occlusion_->dem_max_near(p, span) : -std::numeric_limits<double>::infinity();
+  hidden_boxes_ =
+      occlusion_->remove_hidden(p, camera.earth_radius_m, 10.0 * camera.near_m, areas_, box_of, surface);
   return {};
 }
 

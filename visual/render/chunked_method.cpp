@@ -85,11 +85,22 @@ void select_from(const lod::ChunkQuadtree& tree, int k, const Camera& camera, co
 lod::SceneRequests ChunkedMethod::update(const Camera& camera) {
   drawn_ = select(camera);
   // After the skirts: their depth follows every chunk selected, hidden or not.
-  remove_hidden(camera, drawn_, [&](const DrawnChunk& d) {
+  const auto box_of = [&](const DrawnChunk& d) {
     lod::HorizonCulling::Box b;
     tree_.box(tree_.node(d.node), b.lo, b.hi);
     return b;
-  });
+  };
+  const auto span_at_eye = [&] {  // a chunk's triangles span one quad of its stride
+    int span = 0;
+    for (const DrawnChunk& d : drawn_) {
+      const auto b = box_of(d);
+      const glm::dvec3& p = camera.position;
+      if (p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y)
+        span = std::max(span, tree_.node(d.node).stride);
+    }
+    return span;
+  };
+  remove_hidden(camera, drawn_, box_of, span_at_eye);
   return {};
 }
 

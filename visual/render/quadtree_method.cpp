@@ -14,7 +14,7 @@ QuadtreeMethod::QuadtreeMethod(const TerrainScene& scene, const std::string& sha
     throw std::invalid_argument("quadtree: C1 must be > 0 and C2 >= 0, both finite (got C1 = " +
                                 std::to_string(options_.c1) + ", C2 = " + std::to_string(options_.c2) + ")");
   in_view_ = [this](const glm::dvec3& lo, const glm::dvec3& hi) { return frustum_.intersects_box(lo, hi); };
-  if (options_.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield());
+  if (options_.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield(), scene.height_pyramid());
 }
 
 std::vector<std::string> QuadtreeMethod::column_names() const {

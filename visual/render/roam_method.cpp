@@ -15,7 +15,7 @@ RoamMethod::RoamMethod(const TerrainScene& scene, const std::string& shader_dir,
                                 ")");
   if (options_.viewport_height_px < 1) options_.viewport_height_px = 1024;
   in_view_ = [this](const glm::dvec3& lo, const glm::dvec3& hi) { return frustum_.intersects_box(lo, hi); };
-  if (options_.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield());
+  if (options_.horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield(), scene.height_pyramid());
 }
 
 std::vector<std::string> RoamMethod::column_names() const {

@@ -17,7 +17,7 @@ TauMethod::TauMethod(const std::string& name, const TerrainScene& scene, const s
     : scene_(scene),
       tau_px_(checked_tau(name, tau_px)),
       program_(shader_dir, vertex_shader, scene.shading_stages({"terrain.frag"})) {
-  if (horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield());
+  if (horizon_culling) occlusion_ = std::make_unique<lod::DrawnSurfaceOcclusion>(scene.heightfield(), scene.height_pyramid());
 }
 
 void TauMethod::set_viewport(int, int height_px) {

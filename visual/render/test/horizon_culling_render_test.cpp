@@ -1,8 +1,9 @@
-// Horizon culling of Level0 (lod/horizon_culling.h) leaves the picture as it
-// was: the two-level method with and without it renders the same frames,
-// pixel for pixel (colour and depth), on low, wide views of a rough
-// generated terrain where it hides many clusters, with and without Earth
-// curvature. It must also hide something (else the test proves nothing).
+// Horizon culling (lod/horizon_culling.h; lod/drawn_surface_occlusion.h for
+// the baselines) leaves the picture as it was: every method with and without
+// it renders the same frames, pixel for pixel (colour and depth), on low,
+// wide views of a rough generated terrain where it hides many pieces, with
+// and without Earth curvature. It must also hide something (else the test
+// proves nothing) and draw fewer triangles.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,7 +12,7 @@
 #include <string>
 
 #include "render/frame_renderer.h"
-#include "render/twolevel_method.h"
+#include "render/terrain_method.h"
 #include "session/scenario_runner.h"
 #include "stats/image_error.h"
 #include "view_tour_scenario.h"
@@ -37,52 +38,56 @@ Scenario scenario(bool curved) {
   return s;
 }
 
-void expect_same_frames(bool curved) {
+void expect_same_frames(const std::string& method, bool curved) {
   ig::session::RunOptions o;
   o.method = "reference";
   o.headless = true;
   o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
   ScenarioRunner runner(scenario(curved), o);
-  auto options = runner.scenario().render.twolevel;
-  std::unique_ptr<ig::render::TwoLevelMethod> methods[2];
+  auto options = runner.scenario().render.method_options();
+  std::unique_ptr<ig::render::TerrainMethod> methods[2];
   std::unique_ptr<ig::render::FrameRenderer> renderers[2];
   for (int on = 0; on < 2; ++on) {
-    options.horizon_culling = on == 1;
-    methods[on] = std::make_unique<ig::render::TwoLevelMethod>(runner.scene(), o.shader_dir, options);
+    options.set_horizon_culling(on == 1);
+    methods[on] = ig::render::make_method(method, runner.scene(), o.shader_dir, options);
     renderers[on] = std::make_unique<ig::render::FrameRenderer>(runner.scene(), *methods[on], o.shader_dir);
   }
   ig::gl::RenderTarget target(kW, kH);
-  long long hidden_total = 0, level0_tris[2] = {0, 0}, level1_tris[2] = {0, 0};
+  long long hidden_total = 0, triangles[2] = {0, 0};
   for (int v = 0; v < kViewCount; ++v) {
     runner.render_frame(v);
     const auto camera = runner.channels().front().camera;
     ig::stats::FrameImage images[2];
+    double hidden[2] = {0, 0};
     for (int on = 0; on < 2; ++on) {
       for (int k = 0; k < kSettle - 1; ++k) renderers[on]->render(camera, target);
       const auto frame = renderers[on]->render(camera, target);
       images[on] = ig::stats::read_frame_image(target);
-      for (const auto& [name, value] : frame.method.columns)
-        if (name == "level0_tris") level0_tris[on] += (long long)value;
-        else if (name == "level1_tris") level1_tris[on] += (long long)value;
+      triangles[on] += frame.method.triangles;
+      hidden[on] = frame.method.column("hidden_boxes");
     }
-    const int hidden = methods[1]->level0_hidden_clusters(), hidden_blocks = methods[1]->level1_hidden_blocks();
-    EXPECT_EQ(methods[0]->level0_hidden_clusters() + methods[0]->level1_hidden_blocks(), 0);
-    hidden_total += hidden + hidden_blocks;
+    EXPECT_EQ(hidden[0], 0.0) << "culling off hid something";
+    hidden_total += (long long)hidden[1];
     long long differing = 0;
     for (size_t p = 0; p < images[0].depth.size(); ++p)
       if (images[0].depth[p] != images[1].depth[p] || std::memcmp(&images[0].rgba[4 * p], &images[1].rgba[4 * p], 4) != 0)
         ++differing;
-    std::printf("%s, %-13s: %d Level0 clusters and %d Level1 blocks hidden, %lld pixels differ\n",
-                curved ? "curved" : "flat", kViews[v].name, hidden, hidden_blocks, differing);
-    EXPECT_EQ(differing, 0) << kViews[v].name << ": horizon culling changed the picture";
+    std::printf("%s, %s, %-13s: %.0f boxes hidden, %lld pixels differ\n", method.c_str(), curved ? "curved" : "flat",
+                kViews[v].name, hidden[1], differing);
+    EXPECT_EQ(differing, 0) << method << ", " << kViews[v].name << ": horizon culling changed the picture";
   }
-  std::printf("Triangles drawn over the views without / with horizon culling: Level0 %lld / %lld, Level1 %lld / %lld\n",
-              level0_tris[0], level0_tris[1], level1_tris[0], level1_tris[1]);
-  EXPECT_GT(hidden_total, 0) << "nothing was hidden: the views do not exercise the culling";
-  EXPECT_LT(level0_tris[1] + level1_tris[1], level0_tris[0] + level1_tris[0]);
+  std::printf("%s: triangles drawn over the views without / with horizon culling: %lld / %lld\n", method.c_str(),
+              triangles[0], triangles[1]);
+  EXPECT_GT(hidden_total, 0) << method << ": nothing was hidden: the views do not exercise the culling";
+  EXPECT_LT(triangles[1], triangles[0]) << method;
 }
 
-TEST(HorizonCullingRender, SamePicturesWithAndWithout) { expect_same_frames(false); }
-TEST(HorizonCullingRender, SamePicturesWithAndWithoutOnACurvedEarth) { expect_same_frames(true); }
+class HorizonCullingRender : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(HorizonCullingRender, SamePicturesWithAndWithout) { expect_same_frames(GetParam(), false); }
+TEST_P(HorizonCullingRender, SamePicturesWithAndWithoutOnACurvedEarth) { expect_same_frames(GetParam(), true); }
+
+INSTANTIATE_TEST_SUITE_P(EveryMethod, HorizonCullingRender,
+                         ::testing::Values("twolevel", "roam", "quadtree", "geomipmap", "chunked", "cdlod"));
 
 }  // namespace
