@@ -48,6 +48,7 @@ struct HatHotRequest {
   std::uint8_t update_period = 0;  // 0: answer once; n: every n-th frame until cancelled
   std::uint16_t entity = 0;
   glm::dvec3 point{0.0};  // lat, lon, alt or x, y, z offsets
+  bool operator==(const HatHotRequest&) const = default;  // every field survives a round trip
 };
 
 struct LosSegmentRequest {
@@ -63,6 +64,7 @@ struct LosSegmentRequest {
   std::uint32_t material_mask = 0;
   std::uint8_t update_period = 0;
   std::uint16_t destination_entity = 0;
+  bool operator==(const LosSegmentRequest&) const = default;  // every field survives a round trip
 };
 
 struct LosVectorRequest {
@@ -77,6 +79,7 @@ struct LosVectorRequest {
   glm::dvec3 source{0.0};
   std::uint32_t material_mask = 0;
   std::uint8_t update_period = 0;
+  bool operator==(const LosVectorRequest&) const = default;  // every field survives a round trip
 };
 
 using CigiRequest = std::variant<HatHotRequest, LosSegmentRequest, LosVectorRequest>;
