@@ -53,7 +53,7 @@ TEST(Quadtree, C1SweepGivesMoreTrianglesAndASmallerBound) {
 }
 
 TEST(Quadtree, RegisteredWithItsKnob) {
-  lod_views::expect_registered_with_default_knob(world(), "quadtree", "C1", ig::render::QuadtreeOptions{}.c1, 5, 0.0);
+  lod_views::expect_registered_with_default_knob(world(), "quadtree", "C1", ig::render::QuadtreeOptions{}.c1, 6, 0.0);
 }
 
 }  // namespace

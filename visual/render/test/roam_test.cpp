@@ -41,7 +41,7 @@ TEST(Roam, KnobSweepGivesMoreTrianglesAndASmallerBound) {
 }
 
 TEST(Roam, RegisteredWithItsKnob) {
-  lod_views::expect_registered_with_default_knob(world(), "roam", "tau_px", ig::render::RoamOptions{}.tau_px, 4, -1.0);
+  lod_views::expect_registered_with_default_knob(world(), "roam", "tau_px", ig::render::RoamOptions{}.tau_px, 5, -1.0);
 }
 
 }  // namespace
