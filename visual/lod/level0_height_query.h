@@ -2,7 +2,8 @@
 // Height of the Level0 mesh surface at any point, for closing the step
 // between Level1's edge and the coarser Level0 (the walls in
 // twolevel_method.cpp). A uniform bucket grid over the DEM indexes the
-// triangles, so a query tests a handful of them.
+// triangles, so a query tests a handful of them: about four triangles a
+// bucket by default (the walls ask once per Level1 edge sample every frame).
 
 #include <vector>
 
@@ -12,7 +13,8 @@ namespace ig::lod {
 
 class Level0HeightQuery {
  public:
-  Level0HeightQuery(const Level0Mesh& mesh, int dem_width, int dem_height, int buckets_per_side = 64);
+  // buckets_per_side 0: from the triangle count (64 to 2048).
+  Level0HeightQuery(const Level0Mesh& mesh, int dem_width, int dem_height, int buckets_per_side = 0);
   // Surface height at sample coordinates (i, j); outside the mesh: the
   // nearest bucket's best guess (the mesh covers the DEM, so only rounding).
   double height_at(double i, double j) const;
@@ -21,7 +23,8 @@ class Level0HeightQuery {
   const Level0Mesh& mesh_;
   int buckets_;
   double cell_x_, cell_y_;
-  std::vector<std::vector<int>> bucket_tris_;
+  // Bucket k's triangles (ascending): bucket_tris_[bucket_start_[k] .. bucket_start_[k + 1]).
+  std::vector<int> bucket_start_, bucket_tris_;
 };
 
 }  // namespace ig::lod
