@@ -133,7 +133,7 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
        "depth_rel_max,psnr_db,holes_mean,hole_fraction,interior_holes_mean,enclosed_holes_mean,bound_px_median,"
        "bound_px_max,vs_invocations_median,fs_invocations_median,primitives_median,draw_calls_median,"
        "upload_bytes_median,cpu_ms_median,temporal_pairs,temporal_error_mean,temporal_error_max,cores_median,"
-       "hidden_boxes_median\n";
+       "hidden_boxes_median,passed_per_pixel_median\n";
   for (const auto& r : rows) {
     o << csv_field(r.method) << ',' << (r.knob ? csv_field(r.knob->name) : "") << ','
       << (r.knob ? num(r.knob->value) : "") << ',' << (r.knob ? csv_field(r.knob->unit) : "") << ','
@@ -148,7 +148,7 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
       << fmt("%.10g", r.draw_calls_median) << ',' << fmt("%.10g", r.upload_bytes_median) << ','
       << fmt("%.4f", r.cpu_ms_median) << ',' << r.temporal_pairs << ',' << num(r.temporal_error_mean) << ','
       << num(r.temporal_error_max) << ',' << fmt("%.3f", r.cores_median) << ','
-      << fmt("%.10g", r.hidden_boxes_median) << '\n';
+      << fmt("%.10g", r.hidden_boxes_median) << ',' << fmt("%.4f", r.passed_per_pixel_median) << '\n';
   }
 }
 
@@ -204,16 +204,17 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
        "primitives submitted (pipeline statistics queries, every pass including the sky), draw calls, bytes "
        "uploaded to the GPU; process CPU time per frame (every thread, llvmpipe's included: what the frame "
        "costs in CPU work, unlike the wall clock barely changed by other load on the machine); cores: CPU time / "
-       "wall time per frame; hidden boxes: pieces horizon culling left out per frame. docs/bench.md.\n\n"
+       "wall time per frame; hidden boxes: pieces horizon culling left out per frame; passed / px: samples "
+       "that passed the depth test per pixel, every pass (what an early-z GPU shades). docs/bench.md.\n\n"
     << "| method | knob | vertex invocations | fragment invocations | primitives | draw calls | bytes uploaded | CPU ms "
-       "| cores | hidden boxes |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|\n";
+       "| cores | hidden boxes | passed / px |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
     o << "| " << r.method << " | " << knob_text(r) << " | " << fmt("%.0f", r.vs_invocations_median) << " | "
       << fmt("%.0f", r.fs_invocations_median) << " | " << fmt("%.0f", r.primitives_median) << " | "
       << fmt("%.0f", r.draw_calls_median) << " | " << fmt("%.0f", r.upload_bytes_median) << " | "
       << fmt("%.2f", r.cpu_ms_median) << " | " << fmt("%.2f", r.cores_median) << " | "
-      << fmt("%.0f", r.hidden_boxes_median) << " |\n";
+      << fmt("%.0f", r.hidden_boxes_median) << " | " << fmt("%.2f", r.passed_per_pixel_median) << " |\n";
 
   o << "\n## Matched horizon error\n\n";
   if (!target_px) {

@@ -30,6 +30,9 @@ struct BenchRow {
   // Process CPU time per frame (all threads, llvmpipe's rasteriser included).
   double cpu_ms_median = 0.0;
   double cores_median = 0.0;  // per frame CPU / wall: cores the frame keeps busy
+  // Samples that passed the depth test per pixel, every pass (the fragments
+  // an early-z GPU shades; llvmpipe's fs_invocations count every rasterized one).
+  double passed_per_pixel_median = 0.0;
   // Boxes (blocks, chunks, nodes, triangle groups, clusters) left out by
   // horizon culling per frame (the method's hidden_boxes column; 0 without).
   double hidden_boxes_median = 0.0;

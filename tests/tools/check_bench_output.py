@@ -22,7 +22,7 @@ COLUMNS = [
     "holes_mean", "hole_fraction", "interior_holes_mean", "enclosed_holes_mean", "bound_px_median",
     "bound_px_max", "vs_invocations_median", "fs_invocations_median", "primitives_median", "draw_calls_median",
     "upload_bytes_median", "cpu_ms_median", "temporal_pairs", "temporal_error_mean", "temporal_error_max",
-    "cores_median", "hidden_boxes_median",
+    "cores_median", "hidden_boxes_median", "passed_per_pixel_median",
 ]
 TEXT = {"method", "knob_name", "knob_unit"}
 MAY_BE_EMPTY = {"knob_value", "bound_px_median", "bound_px_max"}
@@ -102,6 +102,8 @@ def main():
             fail(f"{where}: temporal_pairs {row['temporal_pairs']} != {a.pairs}")
         if not 0 < number(row, "cores_median", where) <= 64:
             fail(f"{where}: cores_median must be in (0, 64]")
+        if not 0 < number(row, "passed_per_pixel_median", where) < 64:
+            fail(f"{where}: passed_per_pixel_median must be in (0, 64)")
         if number(row, "hidden_boxes_median", where) < 0:
             fail(f"{where}: hidden_boxes_median must be >= 0")
         if not 0 <= number(row, "temporal_error_mean", where) <= number(row, "temporal_error_max", where):

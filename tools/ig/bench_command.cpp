@@ -351,7 +351,7 @@ int run(const Args& args) {
     const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
 
     renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
-    std::vector<double> frame_ms, cpu_ms, cores, hidden, lod_ms, triangles, vs, fs, prims, draws, uploads;
+    std::vector<double> frame_ms, cpu_ms, cores, hidden, lod_ms, triangles, vs, fs, passed, prims, draws, uploads;
     session::BenchSamples samples(width, height);
     std::map<int, stats::LumaImage> method_before;  // the method's images of the frames before samples
     size_t next_sample = 0;
@@ -370,6 +370,7 @@ int run(const Args& args) {
       triangles.push_back(double(vr.method.triangles));
       vs.push_back(double(vr.total.vs_invocations));
       fs.push_back(double(vr.total.fs_invocations));
+      passed.push_back(double(vr.total.samples_passed) / (double(width) * height));
       prims.push_back(double(vr.total.primitives));
       draws.push_back(double(vr.total.draw_calls));
       uploads.push_back(double(vr.total.bytes_uploaded));
@@ -419,6 +420,7 @@ int run(const Args& args) {
     row.triangles_median = stats::percentiles(triangles).median;
     row.vs_invocations_median = stats::percentiles(vs).median;
     row.fs_invocations_median = stats::percentiles(fs).median;
+    row.passed_per_pixel_median = stats::percentiles(passed).median;
     row.primitives_median = stats::percentiles(prims).median;
     row.draw_calls_median = stats::percentiles(draws).median;
     row.upload_bytes_median = stats::percentiles(uploads).median;
