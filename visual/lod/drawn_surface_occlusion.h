@@ -13,7 +13,9 @@
 // each baseline's own boxes keeps Table 2 a comparison of LOD methods, not of
 // culling. The picture is the same with and without it. No GL here.
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -57,14 +59,22 @@ class DrawnSurfaceOcclusion {
   int cull_triangles(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
                      std::vector<glm::u16vec2>& vertices);
 
-  // The same for a list of drawn pieces, box_of(piece) giving each one's
-  // box: the hidden pieces are removed, the others keep their order.
-  template <class Piece, class BoxOf>
+  // The same for a list of drawn pieces: box_of(piece) gives its box,
+  // span_of(piece) the samples its drawn triangles span at most, which
+  // bounds the drawn surface under the eye by the DEM (dem_max_near) over
+  // the pieces whose footprint holds the eye. The hidden pieces are
+  // removed, the others keep their order.
+  template <class Piece, class BoxOf, class SpanOf>
   int remove_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m, std::vector<Piece>& pieces,
-                    BoxOf box_of, double surface_at_eye_m) {
+                    BoxOf box_of, SpanOf span_of) {
     boxes_.clear();
-    for (const Piece& p : pieces) boxes_.push_back(box_of(p));
-    const int count = mark_hidden(eye, earth_radius_m, min_distance_m, boxes_, hidden_, surface_at_eye_m);
+    int span = 0;
+    for (const Piece& p : pieces) {
+      const HorizonCulling::Box& b = boxes_.emplace_back(box_of(p));
+      if (eye.x >= b.lo.x && eye.x <= b.hi.x && eye.y >= b.lo.y && eye.y <= b.hi.y) span = std::max(span, span_of(p));
+    }
+    const double surface = span > 0 ? dem_max_near(eye, span) : -std::numeric_limits<double>::infinity();
+    const int count = mark_hidden(eye, earth_radius_m, min_distance_m, boxes_, hidden_, surface);
     if (count == 0) return 0;
     size_t kept = 0;
     for (size_t k = 0; k < pieces.size(); ++k)

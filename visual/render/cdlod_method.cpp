@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -70,18 +69,11 @@ lod::SceneRequests CdlodMethod::update(const Camera& camera) {
       tree_.quadrant_box(n, a.quadrant, b.lo, b.hi);
     return b;
   };
-  // Under the eye: a node's triangles, morphing towards its parent's grid,
-  // span at most two quads of its stride.
-  int span = 0;
-  const glm::dvec3& p = camera.position;
-  for (const lod::CdlodArea& a : areas_) {
-    const auto b = box_of(a);
-    if (p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y)
-      span = std::max(span, 2 * tree_.node(a.node).stride);
-  }
-  const double surface = span > 0 ? occlusion_->dem_max_near(p, span) : -std::numeric_limits<double>::infinity();
-  hidden_boxes_ =
-      occlusion_->remove_hidden(p, camera.earth_radius_m, 10.0 * camera.near_m, areas_, box_of, surface);
+  // A node's triangles, morphing towards its parent's grid, span at most
+  // two quads of its stride.
+  const auto span_of = [&](const lod::CdlodArea& a) { return 2 * tree_.node(a.node).stride; };
+  hidden_boxes_ = occlusion_->remove_hidden(camera.position, camera.earth_radius_m, 10.0 * camera.near_m, areas_,
+                                            box_of, span_of);
   return {};
 }
 

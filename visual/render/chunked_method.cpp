@@ -90,17 +90,9 @@ lod::SceneRequests ChunkedMethod::update(const Camera& camera) {
     tree_.box(tree_.node(d.node), b.lo, b.hi);
     return b;
   };
-  const auto span_at_eye = [&] {  // a chunk's triangles span one quad of its stride
-    int span = 0;
-    for (const DrawnChunk& d : drawn_) {
-      const auto b = box_of(d);
-      const glm::dvec3& p = camera.position;
-      if (p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y)
-        span = std::max(span, tree_.node(d.node).stride);
-    }
-    return span;
-  };
-  remove_hidden(camera, drawn_, box_of, span_at_eye);
+  // A chunk's triangles span one quad of its stride.
+  const auto span_of = [&](const DrawnChunk& d) { return tree_.node(d.node).stride; };
+  remove_hidden(camera, drawn_, box_of, span_of);
   return {};
 }
 

@@ -58,20 +58,13 @@ lod::SceneRequests GeoMipMapMethod::update(const Camera& camera) {
     block_box(hf, blocks_.block(d.bx, d.by), b.lo, b.hi);
     return b;
   };
-  // Under the eye: a block's triangles span at most its coarsest (side) stride.
-  const auto span_at_eye = [&] {
-    int span = 0;
-    for (const DrawnBlock& d : selection_.drawn) {
-      const auto b = box_of(d);
-      const glm::dvec3& p = camera.position;
-      if (p.x < b.lo.x || p.x > b.hi.x || p.y < b.lo.y || p.y > b.hi.y) continue;
-      int level = d.config.level;
-      for (int side : d.config.side_level) level = std::max(level, side);
-      span = std::max(span, 1 << level);
-    }
-    return span;
+  // A block's triangles span at most its coarsest (side) stride.
+  const auto span_of = [](const DrawnBlock& d) {
+    int level = d.config.level;
+    for (int side : d.config.side_level) level = std::max(level, side);
+    return 1 << level;
   };
-  remove_hidden(camera, selection_.drawn, box_of, span_at_eye);
+  remove_hidden(camera, selection_.drawn, box_of, span_of);
   return {};
 }
 

@@ -30,6 +30,14 @@ namespace {
   throw std::invalid_argument("unknown method '" + name + "' (available: " + choices + ")");
 }
 
+// A baseline built from its options, the knob (when given) in place of its default.
+template <class Method, class Options>
+std::unique_ptr<TerrainMethod> with_knob(const TerrainScene& scene, const std::string& shader_dir, Options options,
+                                         double Options::*knob_field, std::optional<double> knob) {
+  if (knob) options.*knob_field = *knob;
+  return std::make_unique<Method>(scene, shader_dir, options);
+}
+
 }  // namespace
 
 std::unique_ptr<TerrainMethod> make_method(const std::string& name, TerrainScene& scene,
@@ -59,31 +67,15 @@ std::unique_ptr<TerrainMethod> make_method(const std::string& name, TerrainScene
     if (knob) o.level0_budget = int(*knob);
     return std::make_unique<TwoLevelMethod>(scene, shader_dir, o);
   }
-  if (name == "roam") {
-    options::RoamOptions o = options.roam;
-    if (knob) o.tau_px = *knob;
-    return std::make_unique<RoamMethod>(scene, shader_dir, o);
-  }
-  if (name == "quadtree") {
-    options::QuadtreeOptions o = options.quadtree;
-    if (knob) o.c1 = *knob;
-    return std::make_unique<QuadtreeMethod>(scene, shader_dir, o);
-  }
-  if (name == "geomipmap") {
-    options::GeoMipMapOptions o = options.geomipmap;
-    if (knob) o.tau_px = *knob;
-    return std::make_unique<GeoMipMapMethod>(scene, shader_dir, o);
-  }
-  if (name == "chunked") {
-    options::ChunkedOptions o = options.chunked;
-    if (knob) o.tau_px = *knob;
-    return std::make_unique<ChunkedMethod>(scene, shader_dir, o);
-  }
-  if (name == "cdlod") {
-    options::CdlodOptions o = options.cdlod;
-    if (knob) o.lod0_range = *knob;
-    return std::make_unique<CdlodMethod>(scene, shader_dir, o);
-  }
+  if (name == "roam") return with_knob<RoamMethod>(scene, shader_dir, options.roam, &options::RoamOptions::tau_px, knob);
+  if (name == "quadtree")
+    return with_knob<QuadtreeMethod>(scene, shader_dir, options.quadtree, &options::QuadtreeOptions::c1, knob);
+  if (name == "geomipmap")
+    return with_knob<GeoMipMapMethod>(scene, shader_dir, options.geomipmap, &options::GeoMipMapOptions::tau_px, knob);
+  if (name == "chunked")
+    return with_knob<ChunkedMethod>(scene, shader_dir, options.chunked, &options::ChunkedOptions::tau_px, knob);
+  if (name == "cdlod")
+    return with_knob<CdlodMethod>(scene, shader_dir, options.cdlod, &options::CdlodOptions::lod0_range, knob);
   throw_unknown(name);
 }
 

@@ -4,7 +4,6 @@
 // knob, pixels at the viewport's height), drawn one piece at a time with one
 // program placed by its origin sample, eye-relative in double then float.
 
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,19 +27,14 @@ class TauMethod : public TerrainMethod {
   TauMethod(const std::string& name, const TerrainScene& scene, const std::string& shader_dir,
             const std::string& vertex_shader, double tau_px, bool horizon_culling);
 
-  // Horizon culling over this frame's drawn pieces (box_of(piece): its box;
-  // span_at_eye(): the samples the drawn triangles over the eye span, 0 when
-  // none is drawn there): removes the hidden ones; hidden_boxes() counts
-  // them. Nothing when off.
-  template <class Piece, class BoxOf, class SpanAtEye>
-  void remove_hidden(const Camera& camera, std::vector<Piece>& pieces, BoxOf box_of, SpanAtEye span_at_eye) {
-    hidden_boxes_ = 0;
-    if (!occlusion_) return;
-    const int span = span_at_eye();
-    const double surface = span > 0 ? occlusion_->dem_max_near(camera.position, span)
-                                    : -std::numeric_limits<double>::infinity();
-    hidden_boxes_ = occlusion_->remove_hidden(camera.position, camera.earth_radius_m, 10.0 * camera.near_m, pieces,
-                                              box_of, surface);
+  // Horizon culling over this frame's drawn pieces (lod/drawn_surface_occlusion.h
+  // remove_hidden: box_of and span_of per piece); hidden_boxes() counts
+  // what it removed. Nothing when off.
+  template <class Piece, class BoxOf, class SpanOf>
+  void remove_hidden(const Camera& camera, std::vector<Piece>& pieces, BoxOf box_of, SpanOf span_of) {
+    hidden_boxes_ = occlusion_ ? occlusion_->remove_hidden(camera.position, camera.earth_radius_m,
+                                                           10.0 * camera.near_m, pieces, box_of, span_of)
+                               : 0;
   }
   int hidden_boxes() const { return hidden_boxes_; }
 
