@@ -187,34 +187,14 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
                                    : terrain::back_faces_hidden(hf, view.position);
   const bool eye_above = over_ground && misses.count == 0 &&
                          (eye_in_square || view.position.z > level0_heights_.height_at(eye.x, eye.y));
-  // One sweep for Level1's blocks and Level0's clusters together: a box's
-  // verdict depends only on the floors, so both lists are collected first
-  // (a dry run), marked at once, and each selection then takes its part.
-  MarkHidden block_occlusion, cluster_occlusion;
-  int hidden_blocks = 0, hidden_clusters = 0;
-  if (horizon_ && eye_above) {
-    occlusion_boxes_.clear();
-    const MarkHidden collect = [&](const std::vector<HorizonCulling::Box>& boxes, std::vector<std::uint8_t>& hidden) {
-      occlusion_boxes_.insert(occlusion_boxes_.end(), boxes.begin(), boxes.end());
-      hidden.assign(boxes.size(), 0);
+  int hidden_count = 0;
+  MarkHidden occlusion;
+  if (horizon_ && eye_above)
+    occlusion = [&](const std::vector<HorizonCulling::Box>& boxes, std::vector<std::uint8_t>& hidden) {
+      hidden_count = horizon_->mark_hidden(view.position, view.earth_radius_m, 10.0 * view.near_m, boxes, hidden);
     };
-    visible_level1_blocks(hf, pyramid_, origin, n, level0_.max_error_m, in_view, eye, collect);
-    const size_t blocks = occlusion_boxes_.size();
-    clusters_->select(origin, origin + (n - 1), in_view, sel_.level0_runs[0], sel_.level0_runs[1], collect);
-    horizon_->mark_hidden(view.position, view.earth_radius_m, 10.0 * view.near_m, occlusion_boxes_, occlusion_hidden_);
-    auto part = [&](size_t first, int& count) {
-      return [&, first](const std::vector<HorizonCulling::Box>& boxes, std::vector<std::uint8_t>& hidden) {
-        hidden.assign(occlusion_hidden_.begin() + std::ptrdiff_t(first),
-                      occlusion_hidden_.begin() + std::ptrdiff_t(first + boxes.size()));
-        count = int(std::count(hidden.begin(), hidden.end(), 1));
-      };
-    };
-    block_occlusion = part(0, hidden_blocks);
-    cluster_occlusion = part(blocks, hidden_clusters);
-  }
-  sel_.visible_blocks =
-      visible_level1_blocks(hf, pyramid_, origin, n, level0_.max_error_m, in_view, eye, block_occlusion);
-  sel_.level1_hidden_blocks = hidden_blocks;
+  sel_.visible_blocks = visible_level1_blocks(hf, pyramid_, origin, n, level0_.max_error_m, in_view, eye, occlusion);
+  sel_.level1_hidden_blocks = std::exchange(hidden_count, 0);
   const glm::ivec2 g0 = origin - sel_.band_w, g1 = origin + (n - 1) + sel_.band_w;
   const auto mm = rect_minmax(pyramid_, g0.x, g0.y, g1.x, g1.y);
   const glm::dvec3 band_lo =
@@ -246,8 +226,8 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
   // Level0: clusters of the static buffer outside the view are skipped whole;
   // inside the square nothing is drawn; outside it no discard, so the depth
   // test can reject hidden fragments early.
-  clusters_->select(origin, origin + (n - 1), in_view, sel_.level0_runs[0], sel_.level0_runs[1], cluster_occlusion);
-  sel_.level0_hidden_clusters = hidden_clusters;
+  clusters_->select(origin, origin + (n - 1), in_view, sel_.level0_runs[0], sel_.level0_runs[1], occlusion);
+  sel_.level0_hidden_clusters = hidden_count;
 }
 
 }  // namespace ig::lod

@@ -112,8 +112,6 @@ class TwoLevelSelector {
   const terrain::HeightPyramid& pyramid_;
   options::TwoLevelOptions options_;
   Level0Mesh level0_;
-  std::vector<HorizonCulling::Box> occlusion_boxes_;  // per frame: Level1 blocks, then Level0 clusters
-  std::vector<std::uint8_t> occlusion_hidden_;
   Level0HeightQuery level0_heights_;
   std::unique_ptr<Level0Clusters> clusters_;
   std::unique_ptr<HorizonCulling> horizon_;  // null when horizon culling is off
