@@ -10,6 +10,7 @@
 #include "session/scene_setup.h"
 #include "terrain/paged_heights.h"
 #include "terrain/ray_cast.h"
+#include "session/view_step.h"
 
 namespace ig::session {
 namespace {
@@ -127,7 +128,7 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
-    ch.last = ch.renderer->render(ch.camera, *ch.target);
+    ch.last = render_view(*scene_, *ch.renderer, ch.camera, *ch.target);
     ch.render_ms = ms_since(t0);
   }
   if (pages) {

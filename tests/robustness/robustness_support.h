@@ -29,6 +29,7 @@
 #include "terrain/heightfield.h"
 #include "terrain/ray_cast.h"
 #include "terrain/synthetic_terrain.h"
+#include "session/view_step.h"
 
 namespace robustness {
 
@@ -163,7 +164,7 @@ class Rig {
   // Renders `frames` frames of the same camera (LOD state settles) and reads the last back.
   Frame render(const ig::render::Camera& camera, int frames = 1) {
     Frame f;
-    for (int k = 0; k < frames; ++k) f.result = renderer_->render(camera, *target_);
+    for (int k = 0; k < frames; ++k) f.result = ig::session::render_view(*scene_, *renderer_, camera, *target_);
     f.w = target_->width();
     f.h = target_->height();
     f.depth = target_->read_depth();

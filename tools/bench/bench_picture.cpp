@@ -30,6 +30,7 @@
 #include "render/frame_renderer.h"
 #include "render/terrain_method.h"
 #include "session/scenario_runner.h"
+#include "session/view_step.h"
 
 namespace {
 
@@ -94,7 +95,7 @@ void run(const std::string& file, int w, int h, int frames) {
       ig::render::FrameRenderer& renderer = v.detail ? *ch.renderer : plain_renderer;
       const double c0 = cpu_ms();
       const auto t0 = Clock::now();
-      const auto result = renderer.render(camera, *v.target);
+      const auto result = ig::session::render_view(scene, renderer, camera, *v.target);
       v.wall.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
       v.cpu.push_back(cpu_ms() - c0);
       v.fs.push_back(double(result.total.fs_invocations));

@@ -33,6 +33,7 @@
 #include "stats/frame_log.h"
 #include "stats/image_error.h"
 #include "stats/temporal_error.h"
+#include "session/view_step.h"
 
 namespace ig::app {
 namespace {
@@ -350,7 +351,7 @@ int run(const Args& args) {
     const std::string label = label_of(v, *method);
     const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
 
-    renderer.render(camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
+    ig::session::render_view(runner.scene(), renderer, camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
     std::vector<double> frame_ms, cpu_ms, cores, hidden, lod_ms, triangles, vs, fs, passed, prims, draws, uploads;
     session::BenchSamples samples(width, height);
     std::map<int, stats::LumaImage> method_before;  // the method's images of the frames before samples
@@ -359,7 +360,7 @@ int run(const Args& args) {
       const render::Camera camera = camera_at(frames[i]);
       const auto tf = Clock::now();
       const double cpu0 = process_cpu_ms();
-      const render::ViewResult vr = renderer.render(camera, target);
+      const render::ViewResult vr = ig::session::render_view(runner.scene(), renderer, camera, target);
       const double cpu = process_cpu_ms() - cpu0;
       const double ms = ms_since(tf);
       frame_ms.push_back(ms);

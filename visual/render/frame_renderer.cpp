@@ -21,7 +21,7 @@ std::vector<std::string> pass_names_of(const TerrainMethod& method) {
 }
 }  // namespace
 
-FrameRenderer::FrameRenderer(TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
+FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
     : scene_(scene),
       method_(&method),
       sky_(shader_dir),
@@ -39,19 +39,26 @@ void FrameRenderer::set_method(TerrainMethod& method) {
   method_->set_pass_recorder(&recorder_);
 }
 
-ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTarget& target) {
+ViewSelection FrameRenderer::select(const Camera& world_camera, const gl::RenderTarget& target) {
+  ViewSelection s;
   // Methods work in terrain-local metres (world origin subtracted in double)
   // and see the scene's Earth curvature through the camera.
-  const Camera camera = scene_.local_camera(world_camera);
-  ViewResult r;
+  s.camera = scene_.local_camera(world_camera);
   recorder_.begin_frame();
-  const gl::WorkTally at_start = gl::work_tally();
+  s.work_at_start = gl::work_tally();
   method_->set_viewport(target.width(), target.height());
-  auto t0 = Clock::now();
-  scene_.apply(method_->update(camera));
-  r.timings.lod_ms = ms_since(t0);
+  s.lod_start = Clock::now();
+  s.scene_requests = method_->update(s.camera);
+  return s;
+}
 
-  t0 = Clock::now();
+ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderTarget& target) {
+  const Camera& camera = selection.camera;
+  const gl::WorkTally& at_start = selection.work_at_start;
+  ViewResult r;
+  r.timings.lod_ms = ms_since(selection.lod_start);
+
+  auto t0 = Clock::now();
   target.bind();
   // An eye under the surface sees the terrain's undersides: culled only while it is above.
   gl::begin_frame(back_face_culling_ && terrain::back_faces_hidden(scene_.heightfield(), camera.position));
@@ -84,7 +91,7 @@ ViewResult FrameRenderer::render(const Camera& world_camera, const gl::RenderTar
     r.total.primitives += p.primitives;
     r.total.samples_passed += p.samples_passed;
   }
-  // Uploads in update() (outside every pass) count too.
+  // Uploads in the LOD and scene steps (outside every pass) count too.
   r.total.draw_calls = gl::work_tally().draw_calls - at_start.draw_calls;
   r.total.bytes_uploaded = gl::work_tally().bytes_uploaded - at_start.bytes_uploaded;
   if (!r.method.passes.empty()) r.method.passes += "+";

@@ -1,10 +1,13 @@
 #pragma once
-// One view of one frame: LOD update, the scene step (what the update asked
-// of the scene: prefetches, the height window's move; timed with the update),
-// the method's terrain passes, then the sky into whatever the terrain left
-// uncovered, then the anti-aliasing resolve (multisampled) or post pass
-// (post-filtered). Each stage is timed on the wall clock and closed with gl::finish (GL timer queries are not real GPU
+// One view of one frame, in two halves: select() runs the method's LOD step
+// and returns what it asks of the scene (prefetches, the height window's
+// move); the scene's owner carries that out (session/view_step.h) and then
+// draw() runs the method's terrain passes, the sky into whatever the terrain
+// left uncovered, and the anti-aliasing resolve (multisampled) or post pass
+// (post-filtered). The renderer itself never changes the scene. Each stage is timed on the wall clock and closed with gl::finish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
+
+#include <chrono>
 
 #include "gl/post_filter_pass.h"
 #include "gl/render_target.h"
@@ -31,13 +34,24 @@ struct ViewResult {
   gl::PassWork total;
 };
 
+// The first half of a frame: the method's selection in terrain-local metres
+// and the scene step it asks for. Time until draw() counts as LOD time, so
+// the scene step is timed with the selection.
+struct ViewSelection {
+  Camera camera;  // terrain-local
+  lod::SceneRequests scene_requests;
+  std::chrono::steady_clock::time_point lod_start;
+  gl::WorkTally work_at_start;  // the scene step's uploads count in the frame's work
+};
+
 class FrameRenderer {
  public:
-  FrameRenderer(TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
+  FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
   ~FrameRenderer();
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
-  ViewResult render(const Camera& camera, const gl::RenderTarget& target);
+  ViewSelection select(const Camera& world_camera, const gl::RenderTarget& target);
+  ViewResult draw(const ViewSelection& selection, const gl::RenderTarget& target);
   // Terrain drawn as lines instead of filled; the sky stays filled.
   void set_wireframe(bool on) { wireframe_ = on; }
   bool wireframe() const { return wireframe_; }
@@ -50,7 +64,7 @@ class FrameRenderer {
   void set_method(TerrainMethod& method);
 
  private:
-  TerrainScene& scene_;
+  const TerrainScene& scene_;
   TerrainMethod* method_;
   gl::SkyPass sky_;
   gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)

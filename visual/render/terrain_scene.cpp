@@ -246,12 +246,11 @@ bool TerrainScene::samples_resident(glm::ivec2 lo, glm::ivec2 hi) const {
   return heightfield_.paged->cache->resident_rect(lo.x, lo.y, hi.x - lo.x + 1, hi.y - lo.y + 1);
 }
 
-bool TerrainScene::window_ready(int set, glm::ivec2 centre) {
+std::optional<std::pair<glm::ivec2, glm::ivec2>> TerrainScene::window_samples(int set, glm::ivec2 centre) const {
   const HeightWindowTexture* window = windows_[set].height.get();
-  if (!window || !heightfield_.paged) return true;
-  window->prefetch_around(centre);
+  if (!window || !heightfield_.paged) return std::nullopt;
   const glm::ivec2 o = window->origin_for(centre), s = window->size();
-  return samples_resident(o, o + s - 1);
+  return std::pair{o, o + s - 1};
 }
 
 long long TerrainScene::follow_window(int set, glm::ivec2 centre) {

@@ -22,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -159,10 +160,10 @@ class TerrainScene {
   // Samples [lo, hi] (inclusive, clipped to the DEM) are all readable
   // without waiting on I/O (always true for heights held whole).
   bool samples_resident(glm::ivec2 lo, glm::ivec2 hi) const;
-  // The same for what follow_window(set, centre) would read: that set's
-  // height window centred there (true without a window or paging); asks the
-  // background thread for it (and one tile around) too.
-  bool window_ready(int set, glm::ivec2 centre);
+  // The samples follow_window(set, centre) would read with paged heights:
+  // that set's height window centred there, inclusive (nullopt without a
+  // height window or paging).
+  std::optional<std::pair<glm::ivec2, glm::ivec2>> window_samples(int set, glm::ivec2 centre) const;
 
   // World position of sample (0, 0) at height 0 (default: the origin).
   const glm::dvec3& world_origin() const { return world_origin_; }

@@ -71,15 +71,22 @@ lod::SceneRequests TwoLevelMethod::update(const Camera& camera) {
     return screen_rect_of_box(camera, lo, hi, viewport_.x, viewport_.y);
   };
   // Paged heights, live (the scene's wait_for_pages() false): a square whose
-  // heights are not all resident is refused; asking queues them.
+  // heights (or its height window's) are not all resident is refused, and
+  // the scene step asks for them, first of all its requests.
+  std::vector<std::pair<glm::ivec2, glm::ivec2>> asked;
   lod::Level1Paging paging;
   paging.no_wait = scene_.heightfield().paged && !scene_.wait_for_pages();
   paging.ready = [&](glm::ivec2 lo, glm::ivec2 hi, glm::ivec2 window_centre) {
-    scene_.prefetch_samples(lo, hi);
-    return scene_.samples_resident(lo, hi) && scene_.window_ready(windows_, window_centre);
+    asked.emplace_back(lo, hi);
+    if (!scene_.samples_resident(lo, hi)) return false;
+    const auto window = scene_.window_samples(windows_, window_centre);
+    if (!window) return true;
+    asked.push_back(*window);
+    return scene_.samples_resident(window->first, window->second);
   };
   const double ratio = passes_->read_previous_ratio();
   lod::SceneRequests requests = selector_->select(view, ratio, paging).scene_requests;
+  requests.sample_rects.insert(requests.sample_rects.begin(), asked.begin(), asked.end());
   requests.window_set = windows_;  // this channel's height window follows Level1
   return requests;
 }

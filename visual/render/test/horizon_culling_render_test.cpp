@@ -16,6 +16,7 @@
 #include "session/scenario_runner.h"
 #include "stats/image_error.h"
 #include "view_tour_scenario.h"
+#include "session/view_step.h"
 
 namespace {
 
@@ -60,8 +61,8 @@ void expect_same_frames(const std::string& method, bool curved) {
     ig::stats::FrameImage images[2];
     double hidden[2] = {0, 0};
     for (int on = 0; on < 2; ++on) {
-      for (int k = 0; k < kSettle - 1; ++k) renderers[on]->render(camera, target);
-      const auto frame = renderers[on]->render(camera, target);
+      for (int k = 0; k < kSettle - 1; ++k) ig::session::render_view(runner.scene(), *renderers[on], camera, target);
+      const auto frame = ig::session::render_view(runner.scene(), *renderers[on], camera, target);
       images[on] = ig::stats::read_frame_image(target);
       triangles[on] += frame.method.triangles;
       hidden[on] = frame.method.column("hidden_boxes");

@@ -32,6 +32,7 @@
 #include "render/twolevel_method.h"  // make_method() takes TwoLevelOptions
 #include "terrain/synthetic_terrain.h"
 #include "lod/test/lod_test_terrain.h"
+#include "session/view_step.h"
 
 namespace lod_views {
 
@@ -138,7 +139,7 @@ inline Frame render(World& world, ig::render::TerrainMethod& method, const ig::r
                     ig::render::TerrainScene* scene = nullptr) {
   if (!scene) scene = world.scene.get();
   ig::render::FrameRenderer renderer(*scene, method, world.shader_dir);
-  const auto r = renderer.render(camera, *world.target);
+  const auto r = ig::session::render_view(*scene, renderer, camera, *world.target);
   Frame f;
   f.w = world.target->width();
   f.h = world.target->height();

@@ -42,6 +42,7 @@
 #include "render/twolevel_method.h"
 #include "stats/image_error.h"
 #include "view_tour_scenario.h"
+#include "session/view_step.h"
 
 namespace {
 
@@ -140,7 +141,7 @@ TEST_P(Methods, ImageErrorAgainstTheReferenceIsWithinTheMethodsOwnBound) {
   double worst_mean = 0.0, worst_excess = -1e9;
   for (int v = 0; v < kViewCount; ++v) {
     const auto& camera = cameras_[v];
-    for (int k = 0; k < kSettle; ++k) renderer.render(camera, target);
+    for (int k = 0; k < kSettle; ++k) ig::session::render_view(runner_->scene(), renderer, camera, target);
     const auto img = ig::stats::read_frame_image(target);
     const auto& ref = reference_[v];
     const auto e = ig::stats::image_error(img, ref, camera);
@@ -189,8 +190,8 @@ TEST_P(Methods, BackFaceCullingChangesNoPixel) {
     ig::stats::FrameImage images[2];
     for (int cull = 0; cull < 2; ++cull) {
       renderer.set_back_face_culling(cull == 1);
-      for (int k = 0; k < kSettle - 1; ++k) renderer.render(camera, target);
-      fragments[cull] += (long long)renderer.render(camera, target).total.fs_invocations;
+      for (int k = 0; k < kSettle - 1; ++k) ig::session::render_view(runner_->scene(), renderer, camera, target);
+      fragments[cull] += (long long)ig::session::render_view(runner_->scene(), renderer, camera, target).total.fs_invocations;
       images[cull] = ig::stats::read_frame_image(target);
     }
     long long differing = 0, coverage_changed = 0, far_depth = 0;

@@ -21,6 +21,7 @@
 #include "session/scenario_runner.h"
 #include "stats/temporal_error.h"
 #include "view_tour_scenario.h"
+#include "session/view_step.h"
 
 namespace {
 
@@ -62,11 +63,11 @@ TEST(Popping, AMeshThatChangesAbruptlyBetweenFramesScoresWorseThanASteadyOne) {
   ig::render::FrameRenderer fine_renderer(runner.scene(), *fine_method, o.shader_dir);
   ig::gl::RenderTarget target(kW, kH);
 
-  const long long coarse_triangles = coarse_renderer.render(camera[0], target).method.triangles;
+  const long long coarse_triangles = ig::session::render_view(runner.scene(), coarse_renderer, camera[0], target).method.triangles;
   const auto coarse_before = luma_of(target);
-  const long long fine_triangles = fine_renderer.render(camera[0], target).method.triangles;
+  const long long fine_triangles = ig::session::render_view(runner.scene(), fine_renderer, camera[0], target).method.triangles;
   const auto fine_before = luma_of(target);
-  fine_renderer.render(camera[1], target);
+  ig::session::render_view(runner.scene(), fine_renderer, camera[1], target);
   const auto fine_after = luma_of(target);
   ASSERT_LT(coarse_triangles, fine_triangles) << "the knob jump should change the mesh";
 

@@ -10,6 +10,7 @@
 #include "io/pose.h"
 #include "io/scenario.h"
 #include "render/terrain_method.h"
+#include "session/view_step.h"
 
 namespace {
 using ig::session::RunOptions;
@@ -100,7 +101,7 @@ TEST(WorkCounters, SkyPassesOnlyWhereNoTerrainIs) {
       ig::render::Camera camera = ch.camera;
       camera.attitude = ig::io::attitude_from_hpr({heading, pitch, 0.0});
       ig::render::ViewResult v;
-      for (int k = 0; k < 3; ++k) v = ch.renderer->render(camera, *ch.target);  // two-level settles its size
+      for (int k = 0; k < 3; ++k) v = ig::session::render_view(runner.scene(), *ch.renderer, camera, *ch.target);  // two-level settles its size
       long long sky_px = 0;
       for (float d : ch.target->read_depth()) sky_px += d == 0.0f;
       const auto& sky = v.passes[v.passes.size() - 2];
