@@ -52,6 +52,22 @@ void PoseIntake::handle(Protocol protocol, std::span<const std::uint8_t> datagra
     last_host_frame_ = r.host_frame;
     ++ig_controls_;
   }
+  if (protocol == Protocol::Cigi && r.host_frame) {
+    for (const auto& rc : wire::decode_cigi_host_packets(datagram).rates) {
+      if (rc.entity != wire::kCigiOwnshipEntity || rc.apply_to_part) continue;
+      const bool zero = rc.velocity_mps == glm::dvec3(0.0) && rc.rates_dps == glm::dvec3(0.0);
+      cigi_rates_ = zero ? std::nullopt : std::optional(rc);
+    }
+    if (r.pose && cigi_rates_) {
+      // World rates are north, east, down; body rates forward, right, down.
+      const glm::dvec3 v = cigi_rates_->velocity_mps;
+      const glm::dquat q = attitude_from_hpr({r.pose->heading_deg, r.pose->pitch_deg, r.pose->roll_deg});
+      r.pose->velocity_mps = cigi_rates_->body_axes ? forward_of(q) * v.x + right_of(q) * v.y - up_of(q) * v.z
+                                                    : glm::dvec3(v.y, v.x, -v.z);
+      r.pose->body_rates_dps = cigi_rates_->rates_dps;
+      r.pose->has_velocity = r.pose->has_rates = true;
+    }
+  }
   if (!r.pose) {
     if (r.reject == wire::Reject::NoPose) {
       ++counters_[int(protocol)].no_pose;

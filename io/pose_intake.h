@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/filter/pose_filter.h"
+#include "io/wire/cigi_environment.h"
 #include "io/wire/pose_message.h"
 
 namespace ig::io {
@@ -57,6 +58,10 @@ class PoseIntake {
   // CIGI: datagrams that carried an IG Control (one per host frame; CIGI
   // synchronous operation renders one IG frame for each).
   std::uint64_t ig_controls() const { return ig_controls_; }
+  // CIGI Rate Control for the ownship: its rates ride on every CIGI pose
+  // after it (the filter dead-reckons with them between host frames) until
+  // the next one; all-zero rates hand back to rates derived from the poses.
+  const std::optional<wire::CigiRateControl>& cigi_rates() const { return cigi_rates_; }
 
  private:
   void reject(Protocol p, const std::string& reason);
@@ -66,6 +71,7 @@ class PoseIntake {
   std::string last_source_;
   std::optional<std::uint32_t> last_host_frame_;
   std::uint64_t ig_controls_ = 0;
+  std::optional<wire::CigiRateControl> cigi_rates_;
 };
 
 }  // namespace ig::io

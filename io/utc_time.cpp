@@ -106,4 +106,13 @@ std::optional<options::UtcDateTime> parse_utc_time(std::string_view s, std::stri
   return t;
 }
 
+options::UtcDateTime utc_now() {
+  const auto now = std::chrono::system_clock::now();
+  const auto day = std::chrono::floor<std::chrono::days>(now);
+  const std::chrono::year_month_day ymd(day);
+  const std::chrono::hh_mm_ss time(std::chrono::duration_cast<std::chrono::milliseconds>(now - day));
+  return {int(ymd.year()), int(unsigned(ymd.month())), int(unsigned(ymd.day())), int(time.hours().count()),
+          int(time.minutes().count()), double(time.seconds().count()) + time.subseconds().count() / 1000.0};
+}
+
 }  // namespace ig::io

@@ -18,5 +18,7 @@ constexpr int kMaxUtcYear = 2100;
 // field out of range, a day the month does not have, a zone other than UTC,
 // a year outside [kMinUtcYear, kMaxUtcYear]). Leap seconds (:60) are refused.
 std::optional<options::UtcDateTime> parse_utc_time(std::string_view text, std::string& why);
+// This machine's clock, in UTC.
+options::UtcDateTime utc_now();
 
 }  // namespace ig::io

@@ -19,6 +19,7 @@ std::string capture_name(const ChannelView& ch, int frame, double t) {
   std::snprintf(buf, sizeof buf, "capture_%s_t%07.3fs_f%06d.png", ch.spec.name.c_str(), t, frame);
   return buf;
 }
+std::string final_name(const ChannelView& ch, size_t c) { return c == 0 ? "final.png" : "final_" + ch.spec.name + ".png"; }
 }  // namespace
 
 RunOutputs::RunOutputs(const std::filesystem::path& dir, std::string command, bool progress)
@@ -45,7 +46,7 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
       const int w = ch.target->width(), h = ch.target->height();
       std::vector<std::string> names;
       if (capture) names.push_back(capture_name(ch, f.frame, f.sim_time_s));
-      if (last) names.push_back(c == 0 ? "final.png" : "final_" + ch.spec.name + ".png");
+      if (last) names.push_back(final_name(ch, c));
       for (const auto& name : names) {
         capture::write_png_rgba((dir_ / name).string(), rgba, w, h);
         captured_.push_back(name);
@@ -62,6 +63,7 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
   }
   watch_.observe(runner, f);
   ++rendered_;
+  final_written_ = final_written_ || last;
   if (f.page_waits > 0) ++frames_waited_on_io_;
   page_waits_ += std::max(f.page_waits, 0LL);
   page_ins_ += f.page_ins;
@@ -83,6 +85,14 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
 
 int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file, nlohmann::json extra) {
   if (progress_) std::fprintf(stderr, "\n");
+  // A run that ended without a frame known to be its last (a host that
+  // stopped sending, a signal): final.png is the last frame rendered.
+  for (size_t c = 0; c < runner.channels().size() && rendered_ > 0 && !final_written_; ++c) {
+    const auto& ch = runner.channels()[c];
+    capture::write_png_rgba((dir_ / final_name(ch, c)).string(), ch.target->read_rgba(), ch.target->width(),
+                            ch.target->height());
+    captured_.push_back(final_name(ch, c));
+  }
   const auto& s = runner.scenario();
   const auto& r = s.render;
   const auto& hf = runner.heightfield();
@@ -120,6 +130,7 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
       // At the last frame; azimuth clockwise from true north.
       {"sun_elevation_deg", runner.sun().elevation_deg},
       {"sun_azimuth_deg", runner.sun().azimuth_deg},
+      {"visibility_m", runner.scene().shading().fog_visibility_m},  // 0: no fog
   };
   if (hf.paged) {  // paged heights
     const auto st = hf.paged->cache->stats();

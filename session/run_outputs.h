@@ -43,6 +43,7 @@ class RunOutputs {
   stats::FrameLog log_;
   std::vector<std::string> captured_;
   int rendered_ = 0;
+  bool final_written_ = false;
   std::chrono::steady_clock::time_point start_;
   TerrainWatch watch_;
   // Paged heights: frames that waited on a tile, tiles loaded.

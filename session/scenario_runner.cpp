@@ -47,6 +47,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
                               ") has no georeference to place the sun; use a georeferenced DEM or "
                               "terrain.generator.origin, or give render.sun_direction");
     sun_tracker_.emplace(*r.shading.time_utc);
+    clock_start_ = *r.shading.time_utc;
   }
   frame_count_ = options.frames ? *options.frames : io::scenario_frame_count(scenario_);
 
@@ -125,6 +126,7 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   const auto imagery_before = imagery ? imagery->stats() : render::ImageryWindowTexture::Stats{};
   const auto imagery_pages_before = imagery ? imagery->cache().stats() : terrain::RgbTileCache::Stats{};
   update_sun(sim_time_s, pose.position);
+  f.visibility_m = scene_->shading().fog_visibility_m;
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);
@@ -157,10 +159,19 @@ void ScenarioRunner::update_sun(double sim_time_s, const glm::dvec3& eye) {
   }
   if (!place) return;  // the transform failed out here: the sun stays where it was
   const environment::SunPosition& p =
-      sun_tracker_->at(sim_time_s, {place->latitude_deg, place->longitude_deg, std::isfinite(local.z) ? local.z : 0.0});
+      sun_tracker_->at(clock_runs_ ? sim_time_s - clock_zero_s_ : 0.0, {place->latitude_deg, place->longitude_deg, std::isfinite(local.z) ? local.z : 0.0});
   sun_ = {p.elevation_deg, p.azimuth_deg};
   scene_->set_sun_direction(
       glm::vec3(environment::local_direction(p.azimuth_deg, p.elevation_deg, place->grid_north_deg)));
+}
+
+bool ScenarioRunner::set_time_of_day(const options::UtcDateTime& time, double at_s, bool runs) {
+  if (!geolocation_) return false;
+  sun_tracker_.emplace(time);
+  clock_start_ = time;
+  clock_zero_s_ = at_s;
+  clock_runs_ = runs;
+  return true;
 }
 
 void ScenarioRunner::prefetch_first_window() {
@@ -231,6 +242,7 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
       {"heading_deg", hpr.heading_deg},
       {"pitch_deg", hpr.pitch_deg},
       {"roll_deg", hpr.roll_deg},
+      {"visibility_m", f.visibility_m},
   };
   if (f.page_waits >= 0) {  // paged heights
     row.emplace_back("page_waits", f.page_waits);

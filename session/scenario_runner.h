@@ -60,6 +60,7 @@ struct FrameResult {
   // background thread loaded, and tiles a frame waited for (0 by design).
   long long imagery_held = -1;
   long long imagery_missing = 0, imagery_page_ins = 0, imagery_page_waits = 0;
+  double visibility_m = 0.0;  // the fog's visibility this frame (0: no fog)
 };
 
 // render.antialiasing with "auto" decided for a GL renderer: multisampling
@@ -101,6 +102,13 @@ class ScenarioRunner {
   // environment.time_utc it follows the clock and the eye's place; otherwise
   // it is render.sun_direction (or the default sun) as angles.
   const environment::SunAngles& sun() const { return sun_; }
+  // The host's clock (CIGI Celestial Sphere Control): UTC `time` at sim time
+  // `at_s`; from the next frame the sun follows it, advancing with sim time
+  // when `runs`, held at `time` otherwise. False (nothing changes) where the
+  // terrain has no georeference to place the sun.
+  bool set_time_of_day(const options::UtcDateTime& time, double at_s, bool runs);
+  // The clock's time when last set (nullopt: no clock; the sun is a fixed direction).
+  const std::optional<options::UtcDateTime>& clock_start() const { return clock_start_; }
 
   // Renders frame k (sim time k * step, pose from the scenario's path) for
   // every channel into its target.
@@ -139,6 +147,9 @@ class ScenarioRunner {
   // Where the eye is on the Earth (null without a georeference).
   std::unique_ptr<environment::TerrainGeolocation> geolocation_;
   std::optional<environment::SunTracker> sun_tracker_;  // with environment.time_utc only
+  std::optional<options::UtcDateTime> clock_start_;      // the tracker's time at clock_zero_s_
+  double clock_zero_s_ = 0.0;                            // sim time of clock_start_
+  bool clock_runs_ = true;
   environment::SunAngles sun_;
   // Moves the scene's sun to sim time t at the eye (environment.time_utc),
   // or, without a time, only works out its angles.

@@ -56,4 +56,19 @@ void for_each_cigi_host_packet(std::span<const std::uint8_t> data, OnPacket&& on
   }
 }
 
+// Walks the packets after an IG datagram's Start Of Frame (`sof_size`
+// bytes): on_packet(op, packet, size) for each; false where a packet cannot
+// be framed (size 0 or past the end).
+template <class OnPacket>
+bool for_each_cigi_ig_packet(std::span<const std::uint8_t> data, std::size_t sof_size, OnPacket&& on_packet) {
+  const std::uint8_t* p = data.data();
+  for (std::size_t off = sof_size; off < data.size();) {
+    const std::size_t left = data.size() - off;
+    if (left < 2 || p[off + 1] == 0 || p[off + 1] > left) return false;
+    on_packet(p[off], p + off, std::size_t(p[off + 1]));
+    off += p[off + 1];
+  }
+  return true;
+}
+
 }  // namespace ig::io::wire

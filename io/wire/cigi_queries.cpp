@@ -302,13 +302,8 @@ std::optional<std::vector<CigiResponse>> decode_cigi_responses(std::span<const s
   if (!sof.sof) return std::nullopt;
   const Order o = sof.sof->byte_swapped ? bytes::swapped(bytes::kHostOrder) : bytes::kHostOrder;
   std::vector<CigiResponse> out;
-  const std::uint8_t* p = data.data();
-  for (std::size_t off = kCigiStartOfFrameSize; off < data.size();) {
-    const std::size_t left = data.size() - off;
-    if (left < 2 || p[off + 1] == 0 || p[off + 1] > left) return std::nullopt;
-    const std::uint8_t op = p[off], size = p[off + 1];
-    const std::uint8_t* q = p + off;
-    off += size;
+  const bool framed = for_each_cigi_ig_packet(data, kCigiStartOfFrameSize, [&](std::uint8_t op, const std::uint8_t* q,
+                                                                               std::size_t size) {
     const std::uint32_t frame = size > 4 ? std::uint32_t(q[4] >> 4) : 0u;  // only read inside the packet
     if (op == kCigiOpHatHotResponse && size == kCigiHatHotResponseSize) {
       HatHotResponse h;
@@ -356,7 +351,8 @@ std::optional<std::vector<CigiResponse>> decode_cigi_responses(std::span<const s
       }
       out.emplace_back(l);
     }
-  }
+  });
+  if (!framed) return std::nullopt;
   return out;
 }
 

@@ -20,9 +20,11 @@
 #include "io/host_view_control.h"
 #include "io/net/udp_socket.h"
 #include "io/recording.h"
+#include "io/utc_time.h"
 #include "io/wire/cigi.h"
 #include "session/capture_schedule.h"
 #include "session/drawn_surface.h"
+#include "session/host_environment.h"
 #include "session/host_services.h"
 #include "session/pose_feed.h"
 #include "session/scene_setup.h"
@@ -37,6 +39,21 @@ extern "C" void on_signal(int) { g_stop = true; }
 std::string source_endpoint(const std::string& endpoint, const std::optional<std::string>& group) {
   if (!group) return endpoint.front() == ':' ? "0.0.0.0" + endpoint : endpoint;
   return *group + endpoint.substr(endpoint.rfind(':'));
+}
+
+// The host's time of day and visibility, from the frame about to render.
+void apply_host_environment(HostEnvironment& environment, ScenarioRunner& runner, double sim_time_s) {
+  const auto c = environment.changes(runner.clock_start().value_or(io::utc_now()));
+  if (c.time_utc && !runner.set_time_of_day(*c.time_utc, sim_time_s, c.clock_runs))
+    environment.message("Celestial Sphere Control: the terrain has no georeference to place the sun");
+  if (c.visibility_m) runner.scene().set_fog_visibility(*c.visibility_m);
+}
+
+// Each view's eye (index = channel = CIGI view id), for Position Responses.
+std::vector<io::Pose> view_poses(ScenarioRunner& runner) {
+  std::vector<io::Pose> out;
+  for (const auto& ch : runner.channels()) out.push_back({ch.camera.position, ch.camera.attitude});
+  return out;
 }
 
 struct Source {
@@ -81,11 +98,15 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   // to their sender, from the terrain as drawn (sharing the scene's
   // min/max pyramid).
   std::unique_ptr<HostServices> services;
-  if (cigi_reply || s.udp)
+  if (cigi_reply || s.udp || cigi_source)
     services = std::make_unique<HostServices>(runner.heightfield(), runner.scene().earth_radius_m(),
                                               geodetic_placer(runner.heightfield()),
                                               local_to_geodetic(runner.heightfield()), HostServicesOptions{},
                                               &runner.scene().height_pyramid());
+  // The rest of what a CIGI host sends: time of day, visibility, position
+  // and collision requests, packets counted as not supported.
+  std::unique_ptr<HostEnvironment> environment;
+  if (cigi_source) environment = std::make_unique<HostEnvironment>(*services, local_to_geodetic(runner.heightfield()));
   DrawnSurface drawn(runner);
   if (services && s.host_surface_drawn)
     services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
@@ -120,6 +141,7 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
           if (src.protocol == io::Protocol::Cigi) {
             if (services && cigi_reply) services->take(d);  // answered only with somewhere to send them
             views.take(d, channel_spec);
+            if (environment) environment->take(d);
           }
         },
         max_datagrams);
@@ -179,6 +201,7 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
         }
       }
     }
+    if (environment) apply_host_environment(*environment, runner, frame_start - start);
     const auto t0 = std::chrono::steady_clock::now();
     // Frozen: the last pose again; the sources are still drained and counted.
     const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
@@ -191,8 +214,13 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
     if (cigi_reply) {
       last_sof = io::wire::encode_cigi_start_of_frame(
           std::uint32_t(k), feed.intake().last_host_frame().value_or(0),
-          std::uint32_t(std::llround((frame_start - start) * 1e5)), io::wire::kCigiModeOperate, false);
-      cigi_reply->send(services->frame_datagram(*last_sof, pose));  // with this frame's answers
+          std::uint32_t(std::llround((frame_start - start) * 1e5)),
+          environment ? environment->ig_mode() : io::wire::kCigiModeOperate, false);
+      auto datagram = services->frame_datagram(*last_sof, pose);  // with this frame's answers
+      if (environment)
+        environment->append_frame_packets(pose, view_poses(runner), runner.scene().shading().fog_visibility_m,
+                                          datagram, io::wire::kCigiMaxDatagram);
+      cigi_reply->send(datagram);
     } else if (services) {
       services->answer_frame(pose);  // the frame ends: a new native budget
     }
@@ -224,6 +252,7 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   if (cigi_source) extra["cigi_sync"] = {{"frames", sync_frames}, {"waits", sync_waits}};
   if (services) extra["host_services"] = services->summary();
   if (cigi_source) extra["view_control"] = views.summary();
+  if (environment) extra["cigi"] = environment->summary();
   if (recorder) extra["recording"] = {{"file", *s.record}, {"datagrams", recorder->count()}};
   if (extra_source) extra[extra_source->summary_key()] = extra_source->summary();
   if (control) extra["modbus"] = control->summary();

@@ -15,3 +15,12 @@ add_test(NAME cli.serve.cigi_request_flood
           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/host_flood 47220)
 set_tests_properties(cli.serve.cigi_request_flood PROPERTIES LABELS "cli;net" SKIP_RETURN_CODE 77
   PASS_REGULAR_EXPRESSION "PASS flood summary" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+
+# The rest of a CIGI host's packets, from an independent encoder of the ICD
+# layouts (Python struct): time of day, visibility, position and collision
+# requests, environmental conditions, packets counted as unsupported.
+add_test(NAME cli.serve.cigi_environment
+  COMMAND python3 ${CMAKE_SOURCE_DIR}/tests/tools/cigi_environment_host.py $<TARGET_FILE:ig> ${CMAKE_SOURCE_DIR}
+          ${CMAKE_BINARY_DIR}/test-out/cigi_environment 47240)
+set_tests_properties(cli.serve.cigi_environment PROPERTIES LABELS "cli;net" SKIP_RETURN_CODE 77
+  PASS_REGULAR_EXPRESSION "PASS environment" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)

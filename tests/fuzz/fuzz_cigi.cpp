@@ -1,13 +1,17 @@
-// libFuzzer target: CIGI 3.3 host datagram, host service request and Start
-// Of Frame / response decoders.
+// libFuzzer target: CIGI 3.3 host datagram, host service request, view,
+// environment and Start Of Frame / response decoders.
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <variant>
+#include <vector>
 
 #include "fuzz_check.h"
 #include "io/wire/cigi.h"
+#include "io/wire/cigi_environment.h"
 #include "io/wire/cigi_queries.h"
 #include "io/wire/cigi_views.h"
 
@@ -43,5 +47,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const CigiViewDefinition& v : decode_cigi_view_packets(in).definitions)
     if ((v.top_deg && !(std::abs(*v.top_deg) <= 90.0f)) || (v.top_deg && v.bottom_deg && !(*v.top_deg > *v.bottom_deg)))
       __builtin_trap();
+  // Environment packets: each one taken re-encodes, behind the datagram's
+  // own IG Control (in its byte order), to the same packet.
+  const CigiHostPackets h = decode_cigi_host_packets(in);
+  const bool swap = in.size() >= 8 && in[6] == 0x80 ? std::endian::native == std::endian::little
+                                                      : std::endian::native == std::endian::big;
+  auto again = [&](const auto& packet) {
+    std::vector<std::uint8_t> d(in.begin(), in.begin() + std::min<std::size_t>(in.size(), 24));
+    d.insert(d.end(), packet.begin(), packet.end());
+    return decode_cigi_host_packets(d);
+  };
+  for (const CigiCelestialSphere& c : h.celestial)
+    if (c.hour > 23 || c.minute > 59 || again(encode_cigi_celestial(c, swap)).celestial.at(0) != c) __builtin_trap();
+  for (const CigiAtmosphere& a : h.atmosphere)
+    if (!(a.visibility_m >= 0.0f) || again(encode_cigi_atmosphere(a, swap)).atmosphere.at(0) != a) __builtin_trap();
+  for (const CigiRateControl& rc : h.rates)
+    if (again(encode_cigi_rate_control(rc, swap)).rates.at(0) != rc) __builtin_trap();
+  for (const CigiCollisionSegment& sg : h.segments)
+    if (again(encode_cigi_collision_segment(sg, swap)).segments.at(0) != sg) __builtin_trap();
+  for (const CigiPositionRequest& pr : h.positions)
+    if (again(encode_cigi_position_request(pr, swap)).positions.at(0) != pr) __builtin_trap();
+  for (const std::uint8_t op : h.unsupported)
+    if (cigi_opcode_supported(op)) __builtin_trap();
+  (void)decode_cigi_ig_packets(in);
   return 0;
 }

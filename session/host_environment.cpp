@@ -1,0 +1,204 @@
+#include "session/host_environment.h"
+
+#include <string>
+#include <variant>
+
+namespace ig::session {
+
+using namespace io::wire;
+
+namespace {
+
+const char* object_class_name(int c) {
+  static constexpr const char* kNames[] = {"entity", "articulated part", "view", "view group", "motion tracker"};
+  return c >= 0 && c < 5 ? kNames[c] : "object";
+}
+
+// IG Message ids: 1000 and up, one per message sent.
+constexpr std::uint16_t kMessageIdBase = 1000;
+
+}  // namespace
+
+HostEnvironment::HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic)
+    : services_(services), to_geodetic_(std::move(to_geodetic)) {}
+
+void HostEnvironment::message(const std::string& text) { messages_.push_back(text); }
+
+void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
+  CigiHostPackets p = decode_cigi_host_packets(datagram);
+  if (!p.ig_mode) return;  // not a host datagram: the pose intake counts it
+  const std::uint32_t mode = *p.ig_mode == kCigiModeStandby ? kCigiModeStandby : kCigiModeOperate;
+  if (mode == kCigiModeStandby && ig_mode_ != kCigiModeStandby) {
+    ++counters_.resets;
+    continuous_.clear();
+    segments_.clear();
+  }
+  ig_mode_ = mode;
+  for (const QueryReject r : p.rejects) ++counters_.rejected[query_reject_name(r)];
+  for (const std::uint8_t op : p.unsupported) {
+    ++counters_.unsupported[op];
+    if (announced_.insert(op).second)
+      messages_.push_back("opcode " + std::to_string(op) + " is not supported by this IG: counted and ignored");
+  }
+  if (p.database && refused_databases_.insert(*p.database).second)
+    messages_.push_back("database " + std::to_string(*p.database) +
+                        " cannot be loaded: this IG renders the terrain it was started with");
+  if (!p.celestial.empty()) celestial_ = p.celestial.back();
+  counters_.celestial += p.celestial.size();
+  if (!p.atmosphere.empty()) visibility_m_ = p.atmosphere.back().visibility_m;
+  counters_.atmosphere += p.atmosphere.size();
+  counters_.weather += p.weather.size();
+  for (const auto& r : p.rates) {
+    ++counters_.rate_controls;
+    if (r.entity == kCigiOwnshipEntity && !r.apply_to_part) ownship_rates_ = r;
+  }
+  for (const auto& r : p.positions) {
+    ++counters_.position_requests;
+    const auto key = std::make_pair(int(r.object_class), int(r.object));
+    if (r.continuous) {
+      continuous_[key] = r;
+    } else {
+      continuous_.erase(key);  // a one-shot request ends a continuous one
+      one_shot_.push_back(r);
+    }
+  }
+  for (const auto& s : p.segments) {
+    ++counters_.segment_definitions;
+    if (s.entity != kCigiOwnshipEntity) {
+      ++counters_.rejected["segment-not-on-ownship"];
+      continue;
+    }
+    if (s.enabled) segments_[s.segment] = s;
+    else segments_.erase(s.segment);
+  }
+  counters_.conditions_requests += p.conditions.size();
+  conditions_.insert(conditions_.end(), p.conditions.begin(), p.conditions.end());
+}
+
+HostEnvironment::Changes HostEnvironment::changes(const options::UtcDateTime& today) {
+  Changes c;
+  if (celestial_) {
+    options::UtcDateTime t = today;
+    if (celestial_->date_valid) {
+      t.year = celestial_->year;
+      t.month = celestial_->month;
+      t.day = celestial_->day;
+    }
+    t.hour = celestial_->hour;
+    t.minute = celestial_->minute;
+    t.second = 0.0;
+    c.time_utc = t;
+    c.clock_runs = celestial_->ephemeris;
+    celestial_.reset();
+  }
+  c.visibility_m = visibility_m_;
+  visibility_m_.reset();
+  return c;
+}
+
+std::optional<CigiPositionResponse> HostEnvironment::position_of(const CigiPositionRequest& r,
+                                                                 const io::Pose& ownship,
+                                                                 std::span<const io::Pose> views) const {
+  const io::Pose* pose = nullptr;
+  if (r.object_class == kCigiObjectEntity && r.object == kCigiOwnshipEntity) pose = &ownship;
+  if (r.object_class == kCigiObjectView && r.object < views.size()) pose = &views[r.object];
+  if (!pose || !to_geodetic_) return std::nullopt;
+  const auto g = to_geodetic_(pose->position);
+  if (!g) return std::nullopt;
+  const io::Hpr hpr = io::hpr_from_attitude(pose->attitude);
+  CigiPositionResponse out;
+  out.object = r.object;
+  out.part = r.part;
+  out.object_class = r.object_class;
+  out.coords = 0;  // geodetic: the ownship and the views have no parent
+  out.position = *g;
+  out.roll_deg = float(hpr.roll_deg);
+  out.pitch_deg = float(hpr.pitch_deg);
+  out.yaw_deg = float(hpr.heading_deg);
+  return out;
+}
+
+void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<const io::Pose> views,
+                                           double visibility_m, std::vector<std::uint8_t>& out,
+                                           std::size_t max_bytes) {
+  const bool swap = false;  // this machine's order, as the Start Of Frame's
+  auto fits = [&](std::size_t size) { return out.size() + size <= max_bytes; };
+  auto answer_position = [&](const CigiPositionRequest& r) {
+    const auto p = position_of(r, ownship, views);
+    if (!p) {
+      ++counters_.rejected["position-of-unknown-object"];
+      const int key = 0x10000 + r.object_class;
+      if (announced_.insert(key).second)
+        messages_.push_back(std::string("Position Request: this IG knows entity 0 and the views only, not ") +
+                            object_class_name(r.object_class) + " " + std::to_string(r.object));
+      return;
+    }
+    if (!fits(kCigiPositionResponseSize)) return;
+    append_cigi_position_response(*p, swap, out);
+    ++counters_.position_responses;
+  };
+  for (const auto& r : one_shot_) answer_position(r);
+  one_shot_.clear();
+  for (const auto& [key, r] : continuous_) answer_position(r);
+
+  for (const auto& [id, s] : segments_) {
+    LosSegmentRequest q;
+    q.extended = true;
+    q.source_coords = q.destination_coords = CigiCoords::Entity;
+    q.entity = kCigiOwnshipEntity;
+    q.source = s.start;
+    q.destination = s.end;
+    const auto answer = services_.answer(q, ownship);
+    const auto* los = std::get_if<LosResponse>(&answer);
+    if (!los || !los->valid || !los->range_valid || !fits(kCigiCollisionSegmentNotificationSize)) continue;
+    CigiCollisionNotification n;
+    n.entity = s.entity;
+    n.segment = s.segment;
+    n.material = los->material;
+    n.distance_m = float(los->range_m);
+    append_cigi_collision_notification(n, swap, out);
+    ++counters_.collisions;
+  }
+
+  for (const auto& r : conditions_) {
+    if (r.types & kCigiConditionsWeather && fits(kCigiWeatherConditionsResponseSize)) {
+      CigiWeatherConditions w;
+      w.request_id = r.id;
+      w.visibility_m = float(visibility_m);
+      append_cigi_weather_conditions(w, swap, out);
+      ++counters_.weather_responses;
+    }
+    if ((r.types & ~kCigiConditionsWeather) && announced_.insert(0x20000).second)
+      messages_.push_back("Environmental Conditions Request: only weather conditions are modelled here");
+  }
+  conditions_.clear();
+
+  std::size_t sent = 0;
+  for (; sent < messages_.size() && fits(kCigiIgMessageMaxSize); ++sent) {
+    append_cigi_ig_message({std::uint16_t(kMessageIdBase + counters_.ig_messages), messages_[sent]}, swap, out);
+    ++counters_.ig_messages;
+  }
+  messages_.erase(messages_.begin(), messages_.begin() + std::ptrdiff_t(sent));
+}
+
+nlohmann::json HostEnvironment::summary() const {
+  nlohmann::json unsupported = nlohmann::json::object();
+  for (const auto& [op, n] : counters_.unsupported) unsupported[std::to_string(op)] = n;
+  return {{"celestial_sphere_controls", counters_.celestial},
+          {"atmosphere_controls", counters_.atmosphere},
+          {"weather_controls", counters_.weather},
+          {"rate_controls", counters_.rate_controls},
+          {"position_requests", counters_.position_requests},
+          {"position_responses", counters_.position_responses},
+          {"collision_segments", counters_.segment_definitions},
+          {"collision_notifications", counters_.collisions},
+          {"conditions_requests", counters_.conditions_requests},
+          {"weather_responses", counters_.weather_responses},
+          {"ig_messages", counters_.ig_messages},
+          {"resets", counters_.resets},
+          {"ig_mode", ig_mode_ == kCigiModeStandby ? "standby" : "operate"},
+          {"rejected", counters_.rejected},
+          {"unsupported", unsupported}};
+}
+
+}  // namespace ig::session

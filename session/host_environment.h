@@ -1,0 +1,94 @@
+#pragma once
+// What a CIGI host says beyond poses and terrain queries (docs/protocol.md,
+// "CIGI 3.3: every packet"): the time of day and visibility it sets, the
+// positions and collision segments it asks about, the environmental
+// conditions it requests, and the packets this IG does not act on (counted
+// by opcode, each kind answered once with an IG Message). No sockets and no
+// GL: the live loop hands in the host's datagrams, applies changes() at the
+// frame boundary and appends append_frame_packets() to the frame's datagram.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <span>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/pose.h"
+#include "io/wire/cigi_environment.h"
+#include "options/shading_options.h"
+#include "session/host_services.h"
+
+namespace ig::session {
+
+class HostEnvironment {
+ public:
+  // services: the terrain the collision segments are tested against (the
+  // exact surface HAT/HOT and line-of-sight answer from).
+  HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic);
+
+  // Every datagram from the CIGI host.
+  void take(std::span<const std::uint8_t> datagram);
+
+  // What the host changed since the last call, for the frame about to render.
+  struct Changes {
+    // Celestial Sphere Control: the UTC date and time, and whether the clock
+    // runs from it (ephemeris enabled) or holds it.
+    std::optional<options::UtcDateTime> time_utc;
+    bool clock_runs = true;
+    std::optional<double> visibility_m;  // Atmosphere Control: global visibility
+  };
+  // `today`: the date to use where the host's date is not valid.
+  Changes changes(const options::UtcDateTime& today);
+
+  // The frame's packets for the host: Position Responses, Collision
+  // Detection Segment Notifications, Weather Conditions Responses and IG
+  // Messages, appended to `out` while it stays within max_bytes.
+  // `views`: each view's eye (index = view id); `visibility_m`: in force.
+  void append_frame_packets(const io::Pose& ownship, std::span<const io::Pose> views, double visibility_m,
+                            std::vector<std::uint8_t>& out, std::size_t max_bytes);
+
+  // The IG's own notices to the host (a refused database load, ...): sent
+  // once each with the next frame.
+  void message(const std::string& text);
+
+  struct Counters {
+    std::uint64_t celestial = 0, atmosphere = 0, weather = 0, rate_controls = 0, position_requests = 0,
+                  segment_definitions = 0, conditions_requests = 0;
+    std::uint64_t position_responses = 0, collisions = 0, weather_responses = 0, ig_messages = 0, resets = 0;
+    std::map<int, std::uint64_t> unsupported;         // opcode -> packets
+    std::map<std::string, std::uint64_t> rejected;    // reason -> packets
+  };
+  const Counters& counters() const { return counters_; }
+  // The IG mode the host asks for (IG Control): reset / standby (0) or
+  // operate (1; debug counts as operate), as the Start Of Frame reports it.
+  // Entering reset / standby from operate drops what the host had set up:
+  // continuous Position Requests and collision segments.
+  std::uint32_t ig_mode() const { return ig_mode_; }
+  // The newest Rate Control for the ownship (entity 0, not a part), if any.
+  const std::optional<io::wire::CigiRateControl>& ownship_rates() const { return ownship_rates_; }
+  nlohmann::json summary() const;
+
+ private:
+  std::optional<io::wire::CigiPositionResponse> position_of(const io::wire::CigiPositionRequest& r,
+                                                             const io::Pose& ownship,
+                                                             std::span<const io::Pose> views) const;
+  HostServices& services_;
+  LocalToGeodetic to_geodetic_;
+  std::optional<io::wire::CigiCelestialSphere> celestial_;  // not yet applied
+  std::optional<double> visibility_m_;                      // not yet applied
+  std::optional<io::wire::CigiRateControl> ownship_rates_;
+  std::vector<io::wire::CigiPositionRequest> one_shot_;
+  std::map<std::pair<int, int>, io::wire::CigiPositionRequest> continuous_;  // (class, object)
+  std::map<int, io::wire::CigiCollisionSegment> segments_;                  // the ownship's, by id
+  std::vector<io::wire::CigiEnvironmentRequest> conditions_;
+  std::vector<std::string> messages_;  // to send
+  std::set<int> announced_;            // opcodes already answered with an IG Message
+  std::set<int> refused_databases_;
+  std::uint32_t ig_mode_ = io::wire::kCigiModeOperate;
+  Counters counters_;
+};
+
+}  // namespace ig::session

@@ -1,0 +1,121 @@
+// HostEnvironment: the time of day and visibility a host sets, Position
+// Requests (one-shot, continuous, unknown objects), collision segments cast
+// against the terrain, unsupported opcodes answered once, and a reset.
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "io/wire/cigi.h"
+#include "io/wire/cigi_environment.h"
+#include "session/host_environment.h"
+#include "session/scene_setup.h"
+#include "terrain/test/ramp_terrain.h"
+
+namespace {
+
+using namespace ig::io::wire;
+using ig::session::HostEnvironment;
+using ig::session::HostServices;
+
+struct Fixture {
+  ig::terrain::Heightfield hf = ig::terrain::test::make_ramp_terrain();
+  HostServices services{hf, 0.0, ig::session::geodetic_placer(hf), ig::session::local_to_geodetic(hf)};
+  HostEnvironment env{services, ig::session::local_to_geodetic(hf)};
+  ig::io::Pose own;
+  Fixture() {
+    own.position = {500, 600, 900};
+    own.attitude = ig::io::attitude_from_hpr({90.0, 0.0, 0.0});
+  }
+  template <typename... Packets>
+  void send(std::uint32_t mode, const Packets&... packets) {
+    std::vector<std::uint8_t> d = encode_cigi_host_datagram(1, mode, {}, false);
+    (d.insert(d.end(), packets.begin(), packets.end()), ...);
+    env.take(d);
+  }
+  CigiIgPackets frame() {
+    const auto sof = encode_cigi_start_of_frame(1, 1, 0, kCigiModeOperate, false);
+    std::vector<std::uint8_t> d(sof.begin(), sof.end());
+    const ig::io::Pose view = own;
+    env.append_frame_packets(own, std::span(&view, 1), 5000.0, d, kCigiMaxDatagram);
+    return *decode_cigi_ig_packets(d);
+  }
+};
+
+TEST(HostEnvironment, TimeOfDayAndVisibilityAreChangesForTheNextFrame) {
+  Fixture f;
+  const ig::options::UtcDateTime today{2026, 11, 26, 1, 2, 3.0};
+  EXPECT_FALSE(f.env.changes(today).time_utc);
+  CigiCelestialSphere c;
+  c.hour = 18;
+  c.minute = 30;  // date not valid: today's date is kept
+  CigiAtmosphere a;
+  a.visibility_m = 5000.0f;
+  f.send(kCigiModeOperate, encode_cigi_celestial(c, false), encode_cigi_atmosphere(a, false));
+  const auto ch = f.env.changes(today);
+  ASSERT_TRUE(ch.time_utc && ch.visibility_m);
+  EXPECT_EQ(*ch.time_utc, (ig::options::UtcDateTime{2026, 11, 26, 18, 30, 0.0}));
+  EXPECT_FALSE(ch.clock_runs);  // ephemeris off: the sun holds
+  EXPECT_EQ(*ch.visibility_m, 5000.0);
+  EXPECT_FALSE(f.env.changes(today).visibility_m);  // applied once
+}
+
+TEST(HostEnvironment, PositionRequestsOneShotContinuousAndUnknown) {
+  Fixture f;
+  f.send(kCigiModeOperate, encode_cigi_position_request({0, 0, false, kCigiObjectEntity, 0}, false),
+         encode_cigi_position_request({0, 0, true, kCigiObjectView, 0}, false),
+         encode_cigi_position_request({9, 0, false, kCigiObjectEntity, 0}, false));
+  const CigiIgPackets first = f.frame();
+  ASSERT_EQ(first.positions.size(), 2u);  // entity 0 and view 0; entity 9 is not known
+  const auto geo = *ig::session::local_to_geodetic(f.hf)(f.own.position);
+  EXPECT_EQ(first.positions[0].position, geo);
+  EXPECT_NEAR(first.positions[0].yaw_deg, 90.0f, 1e-4);
+  ASSERT_EQ(first.messages.size(), 1u);
+  EXPECT_NE(first.messages[0].text.find("entity 9"), std::string::npos);
+  EXPECT_EQ(f.frame().positions.size(), 1u);  // the continuous one only
+  f.send(kCigiModeOperate, encode_cigi_position_request({0, 0, false, kCigiObjectView, 0}, false));
+  EXPECT_EQ(f.frame().positions.size(), 1u);  // the one-shot that ends it
+  EXPECT_TRUE(f.frame().positions.empty());
+}
+
+TEST(HostEnvironment, CollisionSegmentsCrossingTheGroundAreNotified) {
+  Fixture f;
+  const double hat = f.own.position.z - f.hf.sample_surface(f.own.position.x, f.own.position.y);
+  f.send(kCigiModeOperate, encode_cigi_collision_segment({0, 1, true, {0, 0, 0}, {0, 0, hat + 20}, 0}, false),
+         encode_cigi_collision_segment({0, 2, true, {0, 0, 0}, {0, 0, hat - 20}, 0}, false),
+         encode_cigi_collision_segment({3, 3, true, {0, 0, 0}, {0, 0, hat + 20}, 0}, false));
+  for (int k = 0; k < 2; ++k) {
+    const CigiIgPackets p = f.frame();
+    ASSERT_EQ(p.collisions.size(), 1u);
+    EXPECT_EQ(p.collisions[0].segment, 1);
+    EXPECT_NEAR(p.collisions[0].distance_m, hat, 0.05);
+  }
+  EXPECT_EQ(f.env.counters().rejected.at("segment-not-on-ownship"), 1u);
+  // A reset drops the host's segments.
+  f.send(kCigiModeStandby);
+  EXPECT_EQ(f.env.ig_mode(), kCigiModeStandby);
+  EXPECT_TRUE(f.frame().collisions.empty());
+  f.send(kCigiModeOperate);
+  EXPECT_EQ(f.env.ig_mode(), kCigiModeOperate);
+}
+
+TEST(HostEnvironment, UnsupportedOpcodesAreCountedAndAnsweredOnce) {
+  Fixture f;
+  const std::array<std::uint8_t, 32> component{4, 32};
+  f.send(kCigiModeOperate, component, component);
+  f.send(kCigiModeOperate, component);
+  EXPECT_EQ(f.env.counters().unsupported.at(4), 3u);
+  EXPECT_EQ(f.frame().messages.size(), 1u);
+  EXPECT_TRUE(f.frame().messages.empty());
+  CigiEnvironmentRequest r;
+  r.types = kCigiConditionsWeather;
+  r.id = 5;
+  f.send(kCigiModeOperate, encode_cigi_environment_request(r, false));
+  const CigiIgPackets p = f.frame();
+  ASSERT_EQ(p.weather.size(), 1u);
+  EXPECT_EQ(p.weather[0].request_id, 5);
+  EXPECT_EQ(p.weather[0].visibility_m, 5000.0f);
+  EXPECT_EQ(f.env.summary()["unsupported"]["4"], 3);
+}
+
+}  // namespace
