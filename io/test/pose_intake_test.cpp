@@ -8,6 +8,8 @@
 #include "io/pose.h"
 #include "io/pose_intake.h"
 #include "io/recording.h"
+#include "io/wire/cigi.h"
+#include "io/wire/cigi_environment.h"
 #include "io/wire/native.h"
 
 namespace {
@@ -110,3 +112,39 @@ TEST(Recording, BadFilesAreNamed) {
 }
 
 }  // namespace
+
+// A CIGI Rate Control for the ownship rides on its poses: the filter
+// dead-reckons with it between host frames, also for the host frames after
+// it that carry no Rate Control; all-zero rates stop that.
+TEST(PoseIntake, CigiRateControlDeadReckonsTheOwnship) {
+  using namespace ig::io::wire;
+  auto place = [](double lat, double lon, double alt) {
+    return std::optional<glm::dvec3>(glm::dvec3(lon * 1e5, lat * 1e5, alt));
+  };
+  PoseMessage m;
+  m.frame = PoseMessage::Frame::Geodetic;
+  m.position = {0.01, 0.02, 500.0};
+  m.heading_deg = 90.0;  // east
+  auto sampled = [&](std::optional<CigiRateControl> rates) {
+    ig::io::PoseFilter filter;
+    ig::io::PoseIntake intake(filter, place);
+    for (std::uint32_t frame : {1u, 2u}) {  // two host frames 1/60 s apart, the same position
+      auto d = encode_cigi_host_datagram(frame, kCigiModeOperate, m, false);
+      if (rates && frame == 1) {
+        const auto rc = encode_cigi_rate_control(*rates, false);
+        d.insert(d.end(), rc.begin(), rc.end());
+      }
+      intake.handle(Protocol::Cigi, d, 10.0 + frame / 60.0);
+    }
+    return *filter.sample(10.1);
+  };
+  const auto still = sampled(std::nullopt);
+  const auto north = sampled(CigiRateControl{0, 0, false, false, {100, 0, 0}, {0, 0, 0}});  // world: x north
+  const auto ahead = sampled(CigiRateControl{0, 0, false, true, {100, 0, 0}, {0, 0, 0}});   // body: x forward (east)
+  const auto zero = sampled(CigiRateControl{0, 0, false, false, {0, 0, 0}, {0, 0, 0}});
+  EXPECT_GT(north.position.y - still.position.y, 1.0);
+  EXPECT_NEAR(north.position.x, still.position.x, 1e-6);
+  EXPECT_GT(ahead.position.x - still.position.x, 1.0);
+  EXPECT_NEAR(ahead.position.y, still.position.y, 1e-6);
+  EXPECT_EQ(zero.position, still.position);
+}
