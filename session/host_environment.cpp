@@ -20,7 +20,12 @@ constexpr std::uint16_t kMessageIdBase = 1000;
 }  // namespace
 
 HostEnvironment::HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic)
-    : services_(services), to_geodetic_(std::move(to_geodetic)) {}
+    : services_(services), to_geodetic_(std::move(to_geodetic)) {
+  for (const char* name : {"celestial_sphere_controls", "atmosphere_controls", "weather_controls", "rate_controls",
+                           "position_requests", "position_responses", "collision_segments", "collision_notifications",
+                           "conditions_requests", "weather_responses", "ig_messages", "resets"})
+    counters_.packets[name] = 0;
+}
 
 void HostEnvironment::message(const std::string& text) { messages_.push_back(text); }
 
@@ -29,7 +34,7 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
   if (!p.ig_mode) return;  // not a host datagram: the pose intake counts it
   const std::uint32_t mode = *p.ig_mode == kCigiModeStandby ? kCigiModeStandby : kCigiModeOperate;
   if (mode == kCigiModeStandby && ig_mode_ != kCigiModeStandby) {
-    ++counters_.resets;
+    ++counters_.packets["resets"];
     continuous_.clear();
     segments_.clear();
   }
@@ -44,17 +49,17 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
     messages_.push_back("database " + std::to_string(*p.database) +
                         " cannot be loaded: this IG renders the terrain it was started with");
   if (!p.celestial.empty()) celestial_ = p.celestial.back();
-  counters_.celestial += p.celestial.size();
+  counters_.packets["celestial_sphere_controls"] += p.celestial.size();
   if (!p.atmosphere.empty()) visibility_m_ = p.atmosphere.back().visibility_m;
-  counters_.atmosphere += p.atmosphere.size();
-  counters_.weather += p.weather.size();
+  counters_.packets["atmosphere_controls"] += p.atmosphere.size();
+  counters_.packets["weather_controls"] += p.weather.size();
   for (const auto& r : p.rates) {
-    ++counters_.rate_controls;
+    ++counters_.packets["rate_controls"];
     if (r.entity == kCigiOwnshipEntity && !r.apply_to_part) ownship_rates_ = r;
   }
   for (const auto& r : p.positions) {
-    ++counters_.position_requests;
-    const auto key = std::make_pair(int(r.object_class), int(r.object));
+    ++counters_.packets["position_requests"];
+    const auto key = std::make_pair(int(r.of.object_class), int(r.of.object));
     if (r.continuous) {
       continuous_[key] = r;
     } else {
@@ -63,7 +68,7 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
     }
   }
   for (const auto& s : p.segments) {
-    ++counters_.segment_definitions;
+    ++counters_.packets["collision_segments"];
     if (s.entity != kCigiOwnshipEntity) {
       ++counters_.rejected["segment-not-on-ownship"];
       continue;
@@ -71,7 +76,7 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
     if (s.enabled) segments_[s.segment] = s;
     else segments_.erase(s.segment);
   }
-  counters_.conditions_requests += p.conditions.size();
+  counters_.packets["conditions_requests"] += p.conditions.size();
   conditions_.insert(conditions_.end(), p.conditions.begin(), p.conditions.end());
 }
 
@@ -100,17 +105,16 @@ std::optional<CigiPositionResponse> HostEnvironment::position_of(const CigiPosit
                                                                  const io::Pose& ownship,
                                                                  std::span<const io::Pose> views) const {
   const io::Pose* pose = nullptr;
-  if (r.object_class == kCigiObjectEntity && r.object == kCigiOwnshipEntity) pose = &ownship;
-  if (r.object_class == kCigiObjectView && r.object < views.size()) pose = &views[r.object];
+  const CigiObjectRef& of = r.of;
+  if (of.object_class == kCigiObjectEntity && of.object == kCigiOwnshipEntity) pose = &ownship;
+  if (of.object_class == kCigiObjectView && of.object < views.size()) pose = &views[of.object];
   if (!pose || !to_geodetic_) return std::nullopt;
   const auto g = to_geodetic_(pose->position);
   if (!g) return std::nullopt;
   const io::Hpr hpr = io::hpr_from_attitude(pose->attitude);
   CigiPositionResponse out;
-  out.object = r.object;
-  out.part = r.part;
-  out.object_class = r.object_class;
-  out.coords = 0;  // geodetic: the ownship and the views have no parent
+  out.of = of;
+  out.of.coords = 0;  // geodetic: the ownship and the views have no parent
   out.position = *g;
   out.roll_deg = float(hpr.roll_deg);
   out.pitch_deg = float(hpr.pitch_deg);
@@ -127,15 +131,15 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
     const auto p = position_of(r, ownship, views);
     if (!p) {
       ++counters_.rejected["position-of-unknown-object"];
-      const int key = 0x10000 + r.object_class;
+      const int key = 0x10000 + r.of.object_class;
       if (announced_.insert(key).second)
         messages_.push_back(std::string("Position Request: this IG knows entity 0 and the views only, not ") +
-                            object_class_name(r.object_class) + " " + std::to_string(r.object));
+                            object_class_name(r.of.object_class) + " " + std::to_string(r.of.object));
       return;
     }
     if (!fits(kCigiPositionResponseSize)) return;
     append_cigi_position_response(*p, swap, out);
-    ++counters_.position_responses;
+    ++counters_.packets["position_responses"];
   };
   for (const auto& r : one_shot_) answer_position(r);
   one_shot_.clear();
@@ -157,7 +161,7 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
     n.material = los->material;
     n.distance_m = float(los->range_m);
     append_cigi_collision_notification(n, swap, out);
-    ++counters_.collisions;
+    ++counters_.packets["collision_notifications"];
   }
 
   for (const auto& r : conditions_) {
@@ -166,7 +170,7 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
       w.request_id = r.id;
       w.visibility_m = float(visibility_m);
       append_cigi_weather_conditions(w, swap, out);
-      ++counters_.weather_responses;
+      ++counters_.packets["weather_responses"];
     }
     if ((r.types & ~kCigiConditionsWeather) && announced_.insert(0x20000).second)
       messages_.push_back("Environmental Conditions Request: only weather conditions are modelled here");
@@ -175,30 +179,20 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
 
   std::size_t sent = 0;
   for (; sent < messages_.size() && fits(kCigiIgMessageMaxSize); ++sent) {
-    append_cigi_ig_message({std::uint16_t(kMessageIdBase + counters_.ig_messages), messages_[sent]}, swap, out);
-    ++counters_.ig_messages;
+    append_cigi_ig_message({std::uint16_t(kMessageIdBase + counters_.packets["ig_messages"]), messages_[sent]}, swap, out);
+    ++counters_.packets["ig_messages"];
   }
   messages_.erase(messages_.begin(), messages_.begin() + std::ptrdiff_t(sent));
 }
 
 nlohmann::json HostEnvironment::summary() const {
+  nlohmann::json out(counters_.packets);
   nlohmann::json unsupported = nlohmann::json::object();
   for (const auto& [op, n] : counters_.unsupported) unsupported[std::to_string(op)] = n;
-  return {{"celestial_sphere_controls", counters_.celestial},
-          {"atmosphere_controls", counters_.atmosphere},
-          {"weather_controls", counters_.weather},
-          {"rate_controls", counters_.rate_controls},
-          {"position_requests", counters_.position_requests},
-          {"position_responses", counters_.position_responses},
-          {"collision_segments", counters_.segment_definitions},
-          {"collision_notifications", counters_.collisions},
-          {"conditions_requests", counters_.conditions_requests},
-          {"weather_responses", counters_.weather_responses},
-          {"ig_messages", counters_.ig_messages},
-          {"resets", counters_.resets},
-          {"ig_mode", ig_mode_ == kCigiModeStandby ? "standby" : "operate"},
-          {"rejected", counters_.rejected},
-          {"unsupported", unsupported}};
+  out["unsupported"] = unsupported;
+  out["rejected"] = counters_.rejected;
+  out["ig_mode"] = ig_mode_ == kCigiModeStandby ? "standby" : "operate";
+  return out;
 }
 
 }  // namespace ig::session

@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 #include <span>
 #include <vector>
 
@@ -55,11 +56,11 @@ class HostEnvironment {
   void message(const std::string& text);
 
   struct Counters {
-    std::uint64_t celestial = 0, atmosphere = 0, weather = 0, rate_controls = 0, position_requests = 0,
-                  segment_definitions = 0, conditions_requests = 0;
-    std::uint64_t position_responses = 0, collisions = 0, weather_responses = 0, ig_messages = 0, resets = 0;
-    std::map<int, std::uint64_t> unsupported;         // opcode -> packets
-    std::map<std::string, std::uint64_t> rejected;    // reason -> packets
+    // Packets taken and answers sent, by summary.json name
+    // ("celestial_sphere_controls", "position_responses", ...).
+    std::map<std::string, std::uint64_t> packets;
+    std::map<int, std::uint64_t> unsupported;       // opcode -> packets
+    std::map<std::string, std::uint64_t> rejected;  // reason -> packets
   };
   const Counters& counters() const { return counters_; }
   // The IG mode the host asks for (IG Control): reset / standby (0) or

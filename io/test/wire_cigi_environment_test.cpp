@@ -96,9 +96,9 @@ TEST(CigiEnvironment, HandWrittenPositionRequestAndSegmentDecode) {
   d.insert(d.end(), s.begin() + 24, s.end());
   const CigiHostPackets p = decode_cigi_host_packets(d);
   ASSERT_EQ(p.positions.size(), 1u);
-  EXPECT_EQ(p.positions[0].object, 3);
+  EXPECT_EQ(p.positions[0].of.object, 3);
   EXPECT_TRUE(p.positions[0].continuous);
-  EXPECT_EQ(p.positions[0].object_class, kCigiObjectView);
+  EXPECT_EQ(p.positions[0].of.object_class, kCigiObjectView);
   ASSERT_EQ(p.segments.size(), 1u);
   EXPECT_EQ(p.segments[0].segment, 9);
   EXPECT_TRUE(p.segments[0].enabled);
@@ -112,7 +112,7 @@ TEST(CigiEnvironment, EveryPacketRoundTripsInBothOrders) {
     const CigiAtmosphere at{true, 80, -5.0f, 1234.5f, 7.0f, 0.5f, 90.0f, 990.0f};
     const CigiWeatherControl wc{4, 2, 70, 3, 0, 2, true, 10.0f, 800.0f, 50.0f, 1500.0f, 300.0f};
     const CigiCollisionSegment sg{0, 4, true, {1, 2, 3}, {4, 5, 600}, 0xF0};
-    const CigiPositionRequest pr{0, 0, true, kCigiObjectEntity, 0};
+    const CigiPositionRequest pr{{0, 0, kCigiObjectEntity, 0}, true};
     const CigiEnvironmentRequest er{kCigiConditionsWeather, 9, {36.5, -118.25, 3000.0}};
     EXPECT_EQ(decode_cigi_host_packets(with_ig_control(encode_cigi_rate_control(rc, swap), swap)).rates.at(0), rc);
     EXPECT_EQ(decode_cigi_host_packets(with_ig_control(encode_cigi_celestial(cs, swap), swap)).celestial.at(0), cs);
@@ -178,7 +178,7 @@ TEST(CigiEnvironment, IgPacketsRoundTripBehindAStartOfFrame) {
   for (bool swap : {false, true}) {
     const auto sof = encode_cigi_start_of_frame(3, 2, 100, kCigiModeOperate, swap);
     Bytes d(sof.begin(), sof.end());
-    const CigiPositionResponse pr{0, 0, 0, 0, {36.7, -118.06, 2500.25}, 1.5f, -4.0f, 250.0f};
+    const CigiPositionResponse pr{{0, 0, 0, 0}, {36.7, -118.06, 2500.25}, 1.5f, -4.0f, 250.0f};
     const CigiCollisionNotification cn{0, 4, false, 0, 0, 1234.5f};
     const CigiWeatherConditions wc{9, 0, 0, 5000.0f, 0, 0, 0, 0};
     const CigiIgMessage long_text{1001, std::string(200, 'x')};

@@ -152,12 +152,9 @@ Decoded take_segment(const std::uint8_t* p, Order o, CigiHostPackets& out) {
 
 Decoded take_position_request(const std::uint8_t* p, Order o, CigiHostPackets& out) {
   CigiPositionRequest r;
-  r.object = bytes::load_u16(p + 2, o);
-  r.part = p[4];
+  r.of = {bytes::load_u16(p + 2, o), p[4], std::uint8_t((p[5] >> 1) & 0x7u), std::uint8_t((p[5] >> 4) & 0x3u)};
   r.continuous = p[5] & 1u;
-  r.object_class = (p[5] >> 1) & 0x7u;
-  r.coords = (p[5] >> 4) & 0x3u;
-  if (r.object_class > 4 || r.coords > 2) return QueryReject::OutOfRange;
+  if (r.of.object_class > 4 || r.of.coords > 2) return QueryReject::OutOfRange;
   out.positions.push_back(r);
   return std::nullopt;
 }
@@ -297,9 +294,9 @@ std::array<std::uint8_t, kCigiPositionRequestSize> encode_cigi_position_request(
                                                                                 bool swap) {
   const Order o = cigi_out_order(swap);
   auto b = packet<kCigiPositionRequestSize>(kCigiOpPositionRequest);
-  bytes::store_u16(b.data() + 2, r.object, o);
-  b[4] = r.part;
-  b[5] = std::uint8_t(bit(r.continuous, 0) | ((r.object_class & 0x7u) << 1) | ((r.coords & 0x3u) << 4));
+  bytes::store_u16(b.data() + 2, r.of.object, o);
+  b[4] = r.of.part;
+  b[5] = std::uint8_t(bit(r.continuous, 0) | ((r.of.object_class & 0x7u) << 1) | ((r.of.coords & 0x3u) << 4));
   return b;
 }
 

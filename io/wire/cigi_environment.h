@@ -113,12 +113,17 @@ struct CigiCollisionSegment {
 // bits 1-3 object class (0 entity, 1 articulated part, 2 view, 3 view group,
 // 4 motion tracker), bits 4-5 coordinate system (0 geodetic, 1 parent
 // entity, 2 submodel).
-struct CigiPositionRequest {
+// The object a Position Request names and its Position Response is about.
+struct CigiObjectRef {
   std::uint16_t object = 0;
   std::uint8_t part = 0;
-  bool continuous = false;
   std::uint8_t object_class = 0;
   std::uint8_t coords = 0;
+  bool operator==(const CigiObjectRef&) const = default;
+};
+struct CigiPositionRequest {
+  CigiObjectRef of;
+  bool continuous = false;
   bool operator==(const CigiPositionRequest&) const = default;
 };
 inline constexpr std::uint8_t kCigiObjectEntity = 0;
@@ -180,8 +185,7 @@ std::array<std::uint8_t, kCigiEnvironmentalConditionsRequestSize> encode_cigi_en
 // longitude / y, [24] altitude / z (f64); [32] roll, [36] pitch, [40] yaw
 // (deg, f32).
 struct CigiPositionResponse {
-  std::uint16_t object = 0;
-  std::uint8_t part = 0, object_class = 0, coords = 0;
+  CigiObjectRef of;
   glm::dvec3 position{0.0};
   float roll_deg = 0, pitch_deg = 0, yaw_deg = 0;
   bool operator==(const CigiPositionResponse&) const = default;

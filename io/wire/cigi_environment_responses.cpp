@@ -27,9 +27,9 @@ std::uint8_t* grow(std::vector<std::uint8_t>& out, std::uint8_t op, std::size_t 
 void append_cigi_position_response(const CigiPositionResponse& r, bool swap, std::vector<std::uint8_t>& out) {
   const Order o = cigi_out_order(swap);
   std::uint8_t* b = grow(out, kCigiOpPositionResponse, kCigiPositionResponseSize);
-  bytes::store_u16(b + 2, r.object, o);
-  b[4] = r.part;
-  b[5] = std::uint8_t((r.object_class & 0x7u) | ((r.coords & 0x3u) << 3));
+  bytes::store_u16(b + 2, r.of.object, o);
+  b[4] = r.of.part;
+  b[5] = std::uint8_t((r.of.object_class & 0x7u) | ((r.of.coords & 0x3u) << 3));
   bytes::store_f64(b + 8, r.position.x, o);
   bytes::store_f64(b + 16, r.position.y, o);
   bytes::store_f64(b + 24, r.position.z, o);
@@ -78,10 +78,7 @@ std::optional<CigiIgPackets> decode_cigi_ig_packets(std::span<const std::uint8_t
                                                                                std::size_t size) {
     if (op == kCigiOpPositionResponse && size == kCigiPositionResponseSize) {
       CigiPositionResponse r;
-      r.object = bytes::load_u16(q + 2, o);
-      r.part = q[4];
-      r.object_class = q[5] & 0x7u;
-      r.coords = (q[5] >> 3) & 0x3u;
+      r.of = {bytes::load_u16(q + 2, o), q[4], std::uint8_t(q[5] & 0x7u), std::uint8_t((q[5] >> 3) & 0x3u)};
       r.position = {bytes::load_f64(q + 8, o), bytes::load_f64(q + 16, o), bytes::load_f64(q + 24, o)};
       r.roll_deg = bytes::load_f32(q + 32, o);
       r.pitch_deg = bytes::load_f32(q + 36, o);

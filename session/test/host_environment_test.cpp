@@ -10,17 +10,14 @@
 #include "io/wire/cigi_environment.h"
 #include "session/host_environment.h"
 #include "session/scene_setup.h"
-#include "terrain/test/ramp_terrain.h"
+#include "session/test/ramp_host_services.h"
 
 namespace {
 
 using namespace ig::io::wire;
 using ig::session::HostEnvironment;
-using ig::session::HostServices;
 
-struct Fixture {
-  ig::terrain::Heightfield hf = ig::terrain::test::make_ramp_terrain();
-  HostServices services{hf, 0.0, ig::session::geodetic_placer(hf), ig::session::local_to_geodetic(hf)};
+struct Fixture : ig::session::test::RampHostServices {
   HostEnvironment env{services, ig::session::local_to_geodetic(hf)};
   ig::io::Pose own;
   Fixture() {
@@ -62,9 +59,9 @@ TEST(HostEnvironment, TimeOfDayAndVisibilityAreChangesForTheNextFrame) {
 
 TEST(HostEnvironment, PositionRequestsOneShotContinuousAndUnknown) {
   Fixture f;
-  f.send(kCigiModeOperate, encode_cigi_position_request({0, 0, false, kCigiObjectEntity, 0}, false),
-         encode_cigi_position_request({0, 0, true, kCigiObjectView, 0}, false),
-         encode_cigi_position_request({9, 0, false, kCigiObjectEntity, 0}, false));
+  f.send(kCigiModeOperate, encode_cigi_position_request({{0, 0, kCigiObjectEntity, 0}, false}, false),
+         encode_cigi_position_request({{0, 0, kCigiObjectView, 0}, true}, false),
+         encode_cigi_position_request({{9, 0, kCigiObjectEntity, 0}, false}, false));
   const CigiIgPackets first = f.frame();
   ASSERT_EQ(first.positions.size(), 2u);  // entity 0 and view 0; entity 9 is not known
   const auto geo = *ig::session::local_to_geodetic(f.hf)(f.own.position);
@@ -73,7 +70,7 @@ TEST(HostEnvironment, PositionRequestsOneShotContinuousAndUnknown) {
   ASSERT_EQ(first.messages.size(), 1u);
   EXPECT_NE(first.messages[0].text.find("entity 9"), std::string::npos);
   EXPECT_EQ(f.frame().positions.size(), 1u);  // the continuous one only
-  f.send(kCigiModeOperate, encode_cigi_position_request({0, 0, false, kCigiObjectView, 0}, false));
+  f.send(kCigiModeOperate, encode_cigi_position_request({{0, 0, kCigiObjectView, 0}, false}, false));
   EXPECT_EQ(f.frame().positions.size(), 1u);  // the one-shot that ends it
   EXPECT_TRUE(f.frame().positions.empty());
 }

@@ -13,7 +13,7 @@
 #include "io/wire/cigi_queries.h"
 #include "io/wire/native_query.h"
 #include "session/scene_setup.h"
-#include "terrain/test/ramp_terrain.h"
+#include "session/test/ramp_host_services.h"
 
 namespace {
 
@@ -21,13 +21,7 @@ using namespace ig::io::wire;
 using ig::session::HostServices;
 using ig::session::HostServicesOptions;
 
-struct Fixture {
-  ig::terrain::Heightfield hf = ig::terrain::test::make_ramp_terrain();
-  HostServices services;
-  explicit Fixture(HostServicesOptions o = {})
-      : services(hf, 0.0, ig::session::geodetic_placer(hf), ig::session::local_to_geodetic(hf), o) {}
-  glm::dvec3 geodetic(double x, double y, double z) { return *ig::session::local_to_geodetic(hf)(glm::dvec3(x, y, z)); }
-};
+using Fixture = ig::session::test::RampHostServices;
 
 template <typename... Packets>
 std::vector<std::uint8_t> datagram(std::uint32_t host_frame, bool swap, const Packets&... packets) {
