@@ -11,6 +11,7 @@
 #include "io/wire/can_fd_pose.h"
 #include "io/wire/canaerospace.h"
 #include "io/wire/cigi.h"
+#include "io/wire/cigi_environment.h"
 #include "io/wire/fgnetfdm.h"
 #include "io/wire/native.h"
 
@@ -55,7 +56,18 @@ int main(int argc, char** argv) {
     write(out / "native", i, n.data(), n.size());
     m.frame = PoseMessage::Frame::Geodetic;
     m.position = glm::dvec3(u(rng) * 80, u(rng) * 170, 1000 + u(rng) * 900);
-    const auto c = ig::io::wire::encode_cigi_host_datagram(static_cast<std::uint32_t>(i), 1, m, (i & 1) != 0);
+    auto c = ig::io::wire::encode_cigi_host_datagram(static_cast<std::uint32_t>(i), 1, m, (i & 1) != 0);
+    if (i % 4 == 3) {  // and the environment packets, so mutations start from them too
+      using namespace ig::io::wire;
+      const bool swap = (i & 1) != 0;
+      auto add = [&c](const auto& packet) { c.insert(c.end(), packet.begin(), packet.end()); };
+      add(encode_cigi_celestial({12, 30, true, true, false, false, true, 6, 21, 2026, 0.0f}, swap));
+      add(encode_cigi_atmosphere({true, 50, 15.0f, 5000.0f, 3.0f, 0.0f, 270.0f, 1013.0f}, swap));
+      add(encode_cigi_rate_control({0, 0, false, true, {50, 0, 0}, {0, 0, 3}}, swap));
+      add(encode_cigi_position_request({{0, 0, kCigiObjectEntity, 0}, true}, swap));
+      add(encode_cigi_collision_segment({0, 1, true, {0, 0, 0}, {0, 0, 500}, 0}, swap));
+      add(encode_cigi_environment_request({kCigiConditionsWeather, 1, {36.7, -118.0, 2000.0}}, swap));
+    }
     write(out / "cigi", i, c.data(), c.size());
     const auto f = ig::io::wire::encode_fgnetfdm(m);
     write(out / "fgfdm", i, f.data(), f.size());
