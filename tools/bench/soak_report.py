@@ -13,11 +13,13 @@
       Markdown to stdout from RUN_DIR (soak.sh's run.json, samples.csv,
       serve/frames.csv, serve/summary.json, host.log, mbpoll.log): the
       samples (time, RSS MB, files, threads; every --table-every seconds,
-      default every sample), growth after the warm-up (last sample against
-      the first at or after --warmup, default 60 s), frame-time percentiles,
-      and the frames over twice the frame budget, those with page waits or
-      uploads beyond the run's median (the IG's own doing) apart from the
-      rest, each with its largest stage. With --check-flat-mb: checks and
+      default every sample), growth after the warm-up (the last sample of
+      the flight against the first after its first --warmup seconds,
+      default 60), frame-time percentiles, and the frames over twice the
+      frame budget (and over twice the run's median), those with page
+      waits, page-ins or uploads beyond the run's median (the IG's own
+      doing) apart from the rest, each with its largest stage. With
+      --check-flat-mb: checks and
       prints PASS / FAIL lines (ig serve exit status 0, summary.json
       written, over the --check-for seconds after the warm-up resident
       memory within MB and open files and threads constant).
@@ -143,15 +145,17 @@ def report(args):
     m0 = re.search(r"sending for .* from steady_s ([0-9.]+)", host_lines)
     m1 = re.search(r"the last sent at steady_s ([0-9.]+)", host_lines)
     flight_end = float(m1.group(1)) if m1 else float("inf")
+    warm = (float(m0.group(1)) if m0 else float(samples[0]["steady_s"])) + args.warmup  # steady clock
 
     # Samples.
     ts = [float(s["t_s"]) for s in samples]
     rss = [int(s["rss_kb"]) / 1024.0 for s in samples]
     in_flight = [float(s["steady_s"]) <= flight_end for s in samples]
     if m0 and samples:
-        p("t = 0 is ig serve's start; the host's first datagram went at %.1f s, its last at %.1f s (samples after "
-          "that: ig serve stopping, writing its outputs)." % (float(m0.group(1)) - float(samples[0]["steady_s"]),
-                                                             flight_end - float(samples[0]["steady_s"])))
+        p("t = 0 is the first sample, as ig serve started; the host's first datagram went at %.1f s, its last at "
+          "%.1f s (samples after that: ig serve stopping, writing its outputs); the warm-up ended at %.1f s." % (
+              float(m0.group(1)) - float(samples[0]["steady_s"]), flight_end - float(samples[0]["steady_s"]),
+              warm - float(samples[0]["steady_s"])))
         p("")
     p("| time (s) | RSS (MB) | anon / file (MB) | open files | threads |")
     p("|---:|---:|---:|---:|---:|")
@@ -164,12 +168,13 @@ def report(args):
                 t, "" if in_flight[k] else " (stopping)", int(s["rss_kb"]) / 1024.0, int(s["rss_anon_kb"]) / 1024.0,
                 int(s["rss_file_kb"]) / 1024.0, s["fds"], s["threads"]))
     p("")
-    after = [k for k, t in enumerate(ts) if t >= args.warmup and in_flight[k]]
+    steady = [float(s["steady_s"]) for s in samples]
+    after = [k for k in range(len(samples)) if steady[k] >= warm and in_flight[k]]
     if len(after) >= 2:
         a, b = after[0], after[-1]
         grow = rss[b] - rss[a]
         seg_t, seg_rss = [ts[k] for k in after], [rss[k] for k in after]
-        p("After the %g-s warm-up, to the end of the flight (%d samples, %.0f s to %.0f s): RSS %.1f -> %.1f MB, growth %+.1f MB (%+.2f %%); "
+        p("After the flight's %g-s warm-up, to its end (%d samples, %.0f s to %.0f s): RSS %.1f -> %.1f MB, growth %+.1f MB (%+.2f %%); "
           "min %.1f, max %.1f MB; least-squares slope %+.1f MB/h. Open files %s, threads %s." % (
               args.warmup, len(after), ts[a], ts[b], rss[a], rss[b], grow, 100.0 * grow / rss[a], min(seg_rss),
               max(seg_rss), slope_per_hour(seg_t, seg_rss),
@@ -299,9 +304,12 @@ def report(args):
         failures.append("host exit status %s" % run.get("host_rc"))
     if summary is None:
         failures.append("no summary.json")
-    stretch = [k for k, t in enumerate(ts) if args.warmup <= t <= args.warmup + args.check_for + 1e-6 and in_flight[k]]
-    every = float(run["sample_every_s"])
-    if not stretch or ts[stretch[-1]] - ts[stretch[0]] < args.check_for - every:
+    # From the first sample after the warm-up to the first at least --check-for later, all in the flight.
+    first = next((k for k in range(len(samples)) if steady[k] >= warm), None)
+    last = next((k for k in range(len(samples)) if first is not None and steady[k] >= steady[first] + args.check_for),
+                None)
+    stretch = list(range(first, last + 1)) if first is not None and last is not None and in_flight[last] else []
+    if not stretch:
         failures.append("the samples do not cover %g s after the warm-up (run too short)" % args.check_for)
     else:
         seg = [rss[k] for k in stretch]
