@@ -21,12 +21,14 @@ struct RequestLoad {
   int hot = 1000;        // HAT/HOT requests a frame: a third each HAT, HOT, extended
   int los = 100;         // extended LOS requests a frame: half segments, half vectors
   double spread_m = 0.0; // HAT/HOT points within this of the ownship; 0: the whole DEM
+  double los_spread_m = 0.0;  // LOS sources within this of the ownship; 0: the whole DEM
 };
 
 // Requests drawn from one seeded generator, so a run is repeatable: HAT/HOT
 // points 3000 m high over the middle 90% of the DEM (or near the ownship);
-// LOS from 2000 m above the terrain, 5-20 km long, segments ending on the
-// surface, vectors 5-30 degrees down. Needs a geographic DEM (throws
+// LOS from 2000 m above the terrain (over the same 90%, or near the
+// ownship), 5-20 km long, segments ending on the surface, vectors 5-30
+// degrees down. Needs a geographic DEM (throws
 // std::runtime_error otherwise): requests are in geodetic coordinates.
 class CigiRequestMix {
  public:
@@ -41,6 +43,11 @@ class CigiRequestMix {
   // Control, then the requests (ids from 0). Odd frames are written in the
   // byte order opposite to this machine's.
   std::vector<std::uint8_t> datagram(std::uint32_t frame, const RequestLoad& load, const io::wire::PoseMessage& ownship);
+  // The same around `around` (terrain-local metres) instead of ownship_at():
+  // a host whose ownship moves asks about the terrain near it. Points are
+  // kept on the DEM.
+  std::vector<std::uint8_t> datagram(std::uint32_t frame, const RequestLoad& load, const io::wire::PoseMessage& ownship,
+                                     const glm::dvec3& around);
 
  private:
   const terrain::Heightfield& hf_;

@@ -80,6 +80,33 @@ TEST(CigiRequestMix, SpreadKeepsPointsNearTheOwnship) {
   }
 }
 
+TEST(CigiRequestMix, AroundAMovingOwnshipKeepsPointsAndLineSourcesNearIt) {
+  const auto hf = make_ramp_terrain();
+  CigiRequestMix mix(hf);
+  const glm::dvec3 at(0.25 * hf.extent_x_m(), 0.7 * hf.extent_y_m(), 0.0);
+  const auto own = mix.geodetic(at);
+  const auto far = mix.geodetic(at + glm::dvec3(200.0, 200.0, 0.0));
+  auto near = [&](const glm::dvec3& p) {
+    EXPECT_LT(std::abs(p.x - own.x), std::abs(far.x - own.x));
+    EXPECT_LT(std::abs(p.y - own.y), std::abs(far.y - own.y));
+  };
+  const auto got = decode_cigi_requests(mix.datagram(2, RequestLoad{30, 10, 100.0, 100.0}, {}, at));
+  ASSERT_EQ(got.requests.size(), 40u);
+  for (const CigiRequest& r : got.requests) {
+    if (const auto* h = std::get_if<HatHotRequest>(&r)) near(h->point);
+    else if (const auto* s = std::get_if<LosSegmentRequest>(&r)) near(s->source);
+    else near(std::get<LosVectorRequest>(r).source);
+  }
+  // Near a corner every point stays on the DEM.
+  const auto corner = decode_cigi_requests(mix.datagram(3, RequestLoad{30, 0, 500.0}, {}, glm::dvec3(0.0)));
+  const auto sw = mix.geodetic(glm::dvec3(0.0));
+  for (const CigiRequest& r : corner.requests) {
+    const auto& p = std::get<HatHotRequest>(r).point;
+    EXPECT_GE(p.x, sw.x - 1e-9);
+    EXPECT_GE(p.y, sw.y - 1e-9);
+  }
+}
+
 TEST(CigiRequestMix, NeedsAGeographicDem) {
   const auto hf = make_ramp_terrain(false);
   EXPECT_THROW(CigiRequestMix{hf}, std::runtime_error);
