@@ -34,6 +34,19 @@ std::vector<std::pair<std::string, std::vector<const BenchRow*>>> by_method(cons
   return out;
 }
 
+// A Markdown table row: "| a | b |".
+void table_row(std::ostream& o, const std::vector<std::string>& cells) {
+  for (const auto& c : cells) o << "| " << c << " ";
+  o << "|\n";
+}
+
+// A Markdown table's header: the column names and the rule under them.
+void table_header(std::ostream& o, const std::vector<std::string>& columns) {
+  table_row(o, columns);
+  for (size_t k = 0; k < columns.size(); ++k) o << "|---";
+  o << "|\n";
+}
+
 std::string knob_text(const BenchRow& r) {
   if (!r.knob) return "-";
   return r.knob->name + "=" + num(r.knob->value) + (r.default_knob ? " (default)" : "");
@@ -183,21 +196,19 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
   o << "## Error against run time\n\n"
     << "Frame time: LOD update + passes + sky, closed with glFinish (wall clock), median and p95 over the frames. "
        "Errors over the sampled frames; temporal error (popping, luma levels) over the pairs (frame rendered "
-       "just before a sample, the sample). Column definitions: docs/bench.md.\n\n"
-    << "| method | knob | frame ms median | p95 | fps | LOD ms | triangles | horizon mean px | horizon max px | "
-       "depth p95 | depth max | PSNR dB | holes/frame | bound px median / max | temporal error mean / max |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "just before a sample, the sample). Column definitions: docs/bench.md.\n\n";
+  table_header(o, {"method", "knob", "frame ms median", "p95", "fps", "LOD ms", "triangles", "horizon mean px",
+                   "horizon max px", "depth p95", "depth max", "PSNR dB", "holes/frame", "bound px median / max",
+                   "temporal error mean / max"});
   for (const auto& r : rows)
-    o << "| " << r.method << " | " << knob_text(r) << " | " << fmt("%.2f", r.frame_ms_median) << " | "
-      << fmt("%.2f", r.frame_ms_p95) << " | " << fmt("%.1f", r.frame_ms_median > 0 ? 1000.0 / r.frame_ms_median : 0.0)
-      << " | " << fmt("%.3f", r.lod_ms_median) << " | " << fmt("%.0f", r.triangles_median) << " | "
-      << fmt("%.3f", r.horizon_mean_px) << " | " << fmt("%.0f", r.horizon_max_px) << " | "
-      << fmt("%.5f", r.depth_rel_p95) << " | " << fmt("%.4f", r.depth_rel_max) << " | " << fmt("%.2f", r.psnr_db)
-      << " | " << fmt("%.1f", r.holes_mean) << " | "
-      << (r.bound_px_median ? fmt("%.2f", *r.bound_px_median) + " / " + fmt("%.2f", *r.bound_px_max) : "none")
-      << " | "
-      << (r.temporal_pairs ? fmt("%.3f", r.temporal_error_mean) + " / " + fmt("%.3f", r.temporal_error_max) : "none")
-      << " |\n";
+    table_row(o, {r.method, knob_text(r), fmt("%.2f", r.frame_ms_median), fmt("%.2f", r.frame_ms_p95),
+                  fmt("%.1f", r.frame_ms_median > 0 ? 1000.0 / r.frame_ms_median : 0.0), fmt("%.3f", r.lod_ms_median),
+                  fmt("%.0f", r.triangles_median), fmt("%.3f", r.horizon_mean_px), fmt("%.0f", r.horizon_max_px),
+                  fmt("%.5f", r.depth_rel_p95), fmt("%.4f", r.depth_rel_max), fmt("%.2f", r.psnr_db),
+                  fmt("%.1f", r.holes_mean),
+                  r.bound_px_median ? fmt("%.2f", *r.bound_px_median) + " / " + fmt("%.2f", *r.bound_px_max) : "none",
+                  r.temporal_pairs ? fmt("%.3f", r.temporal_error_mean) + " / " + fmt("%.3f", r.temporal_error_max)
+                                   : "none"});
 
   o << "\n## Work per frame\n\n"
     << "Hardware-independent work, medians over the frames: vertex and fragment shader invocations and "
@@ -205,16 +216,14 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
        "uploaded to the GPU; process CPU time per frame (every thread, llvmpipe's included: what the frame "
        "costs in CPU work, unlike the wall clock barely changed by other load on the machine); cores: CPU time / "
        "wall time per frame; hidden boxes: pieces horizon culling left out per frame; passed / px: samples "
-       "that passed the depth test per pixel, every pass (what an early-z GPU shades). docs/bench.md.\n\n"
-    << "| method | knob | vertex invocations | fragment invocations | primitives | draw calls | bytes uploaded | CPU ms "
-       "| cores | hidden boxes | passed / px |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "that passed the depth test per pixel, every pass (what an early-z GPU shades). docs/bench.md.\n\n";
+  table_header(o, {"method", "knob", "vertex invocations", "fragment invocations", "primitives", "draw calls",
+                   "bytes uploaded", "CPU ms", "cores", "hidden boxes", "passed / px"});
   for (const auto& r : rows)
-    o << "| " << r.method << " | " << knob_text(r) << " | " << fmt("%.0f", r.vs_invocations_median) << " | "
-      << fmt("%.0f", r.fs_invocations_median) << " | " << fmt("%.0f", r.primitives_median) << " | "
-      << fmt("%.0f", r.draw_calls_median) << " | " << fmt("%.0f", r.upload_bytes_median) << " | "
-      << fmt("%.2f", r.cpu_ms_median) << " | " << fmt("%.2f", r.cores_median) << " | "
-      << fmt("%.0f", r.hidden_boxes_median) << " | " << fmt("%.2f", r.passed_per_pixel_median) << " |\n";
+    table_row(o, {r.method, knob_text(r), fmt("%.0f", r.vs_invocations_median), fmt("%.0f", r.fs_invocations_median),
+                  fmt("%.0f", r.primitives_median), fmt("%.0f", r.draw_calls_median),
+                  fmt("%.0f", r.upload_bytes_median), fmt("%.2f", r.cpu_ms_median), fmt("%.2f", r.cores_median),
+                  fmt("%.0f", r.hidden_boxes_median), fmt("%.2f", r.passed_per_pixel_median)});
 
   o << "\n## Matched horizon error\n\n";
   if (!target_px) {
@@ -224,9 +233,8 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
   o << "Target: mean horizon error " << fmt("%.3f", *target_px) << " px (" << target_source
     << "). Each method's median frame time at that error: a point at the target gives its own time, else "
        "linear interpolation between neighbouring points of its sweep (docs/bench.md); ratio = method ms / "
-       "twolevel ms (how many times faster the two-level method is at equal horizon error).\n\n"
-    << "| method | frame ms at target | how | ratio vs twolevel | CPU ms at target | CPU ratio |\n"
-    << "|---|---|---|---|---|---|\n";
+       "twolevel ms (how many times faster the two-level method is at equal horizon error).\n\n";
+  table_header(o, {"method", "frame ms at target", "how", "ratio vs twolevel", "CPU ms at target", "CPU ratio"});
   auto ratio_text = [](const MatchedRow& m) {
     if (!m.ratio) return std::string("n/a (no twolevel time at the target)");
     const std::string v = fmt("%.2f", *m.ratio);
@@ -235,8 +243,8 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
   const auto wall = match_horizon_error(rows, *target_px);
   const auto cpu = match_horizon_error(rows, *target_px, &BenchRow::cpu_ms_median);
   for (size_t k = 0; k < wall.size(); ++k)
-    o << "| " << wall[k].method << " | " << matched_ms_text(wall[k]) << " | " << how_text(wall[k].kind) << " | "
-      << ratio_text(wall[k]) << " | " << matched_ms_text(cpu[k]) << " | " << ratio_text(cpu[k]) << " |\n";
+    table_row(o, {wall[k].method, matched_ms_text(wall[k]), how_text(wall[k].kind), ratio_text(wall[k]),
+                  matched_ms_text(cpu[k]), ratio_text(cpu[k])});
 
   // The same comparison at every two-level setting of a sweep, on CPU time.
   std::vector<const BenchRow*> settings;

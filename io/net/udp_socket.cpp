@@ -99,43 +99,47 @@ double steady_now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-UdpReceiver::UdpReceiver(const std::string& bind_endpoint, const std::string& interface_address) {
+UdpDescriptor::UdpDescriptor(int flags, const std::string& what)
+    : fd_(socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC | flags, 0)) {
+  if (fd_ < 0) {
+    const std::string e = errno_text();
+    throw NetError("udp " + what + ": socket: " + e);
+  }
+}
+
+UdpDescriptor::~UdpDescriptor() { close(fd_); }
+
+UdpReceiver::UdpReceiver(const std::string& bind_endpoint, const std::string& interface_address)
+    : fd_(SOCK_NONBLOCK, bind_endpoint) {
   const sockaddr_in addr = parse_endpoint(bind_endpoint);
-  fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-  if (fd_ < 0) throw NetError("udp " + bind_endpoint + ": socket: " + errno_text());
+  const int fd = fd_.get();
   const int one = 1;
-  setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-  setsockopt(fd_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one);
+  setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  setsockopt(fd, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one);
   const int rcvbuf = 4 << 20;  // absorb bursts between frames
-  setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
+  setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
   // Receive time per datagram, taken by the kernel when it arrived (not when
   // the frame loop gets round to reading it).
-  setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &one, sizeof one);
-  if (bind(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
+  setsockopt(fd, SOL_SOCKET, SO_TIMESTAMPNS, &one, sizeof one);
+  if (bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
     const std::string e = errno_text();
-    close(fd_);
     throw NetError("udp " + bind_endpoint + ": bind: " + e);
   }
   if (is_multicast(addr)) {
     ip_mreq m{};
     m.imr_multiaddr = addr.sin_addr;
     m.imr_interface = parse_address(interface_address, "multicast interface");
-    if (setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
+    if (setsockopt(fd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
       const std::string e = errno_text();
-      close(fd_);
       throw NetError("udp " + bind_endpoint + ": join multicast group on " + interface_address + ": " + e);
     }
   }
 }
 
-UdpReceiver::~UdpReceiver() {
-  if (fd_ >= 0) close(fd_);
-}
-
 std::uint16_t UdpReceiver::port() const {
   sockaddr_in a{};
   socklen_t len = sizeof a;
-  getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &len);
+  getsockname(fd_.get(), reinterpret_cast<sockaddr*>(&a), &len);
   return ntohs(a.sin_port);
 }
 
@@ -154,7 +158,7 @@ std::size_t UdpReceiver::poll(const Handler& handler, std::size_t max_datagrams)
     msg.msg_iovlen = 1;
     msg.msg_control = control;
     msg.msg_controllen = sizeof control;
-    const ssize_t got = recvmsg(fd_, &msg, MSG_TRUNC);
+    const ssize_t got = recvmsg(fd_.get(), &msg, MSG_TRUNC);
     if (got < 0) {
       if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) ++stats_.errors;
       break;
@@ -183,37 +187,31 @@ std::size_t UdpReceiver::poll(const Handler& handler, std::size_t max_datagrams)
 }
 
 bool UdpReceiver::wait_readable(double timeout_s) const {
-  pollfd p{fd_, POLLIN, 0};
+  pollfd p{fd_.get(), POLLIN, 0};
   const int ms = timeout_s <= 0.0 ? 0 : int(std::min(timeout_s, 3600.0) * 1000.0 + 0.5);
   return ::poll(&p, 1, ms) > 0 && (p.revents & POLLIN);
 }
 
 UdpSender::UdpSender(const std::string& destination, const std::string& interface_address)
-    : destination_(parse_endpoint(destination)) {
-  fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  if (fd_ < 0) throw NetError("udp " + destination + ": socket: " + errno_text());
+    : fd_(0, destination), destination_(parse_endpoint(destination)) {
   if (is_multicast(destination_)) {
     const in_addr itf = parse_address(interface_address, "multicast interface");
-    setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_IF, &itf, sizeof itf);
+    setsockopt(fd_.get(), IPPROTO_IP, IP_MULTICAST_IF, &itf, sizeof itf);
     const unsigned char ttl = 1, loop = 1;
-    setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl);
-    setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_LOOP, &loop, sizeof loop);
+    setsockopt(fd_.get(), IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl);
+    setsockopt(fd_.get(), IPPROTO_IP, IP_MULTICAST_LOOP, &loop, sizeof loop);
   }
-}
-
-UdpSender::~UdpSender() {
-  if (fd_ >= 0) close(fd_);
 }
 
 bool UdpSender::send(std::span<const std::uint8_t> d) { return send_to(d, destination_); }
 
 bool UdpReceiver::send_to(std::span<const std::uint8_t> d, const sockaddr_in& to) {
-  return sendto(fd_, d.data(), d.size(), MSG_DONTWAIT, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
+  return sendto(fd_.get(), d.data(), d.size(), MSG_DONTWAIT, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
          ssize_t(d.size());
 }
 
 bool UdpSender::send_to(std::span<const std::uint8_t> d, const sockaddr_in& to) {
-  return sendto(fd_, d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
+  return sendto(fd_.get(), d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
          ssize_t(d.size());
 }
 

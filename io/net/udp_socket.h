@@ -33,15 +33,28 @@ struct ReceiveStats {
   std::uint64_t kernel_timestamps = 0;  // datagrams with a kernel receive time (SO_TIMESTAMPNS)
 };
 
+// A UDP socket's descriptor (SOCK_CLOEXEC plus `flags`), closed when
+// destroyed, so neither the sockets below nor a constructor that throws
+// half way leaves it open; not copyable. Throws NetError "udp WHAT: socket:
+// reason" when the kernel gives none.
+class UdpDescriptor {
+ public:
+  UdpDescriptor(int flags, const std::string& what);
+  ~UdpDescriptor();
+  UdpDescriptor(const UdpDescriptor&) = delete;
+  UdpDescriptor& operator=(const UdpDescriptor&) = delete;
+  int get() const { return fd_; }
+
+ private:
+  int fd_;
+};
+
 class UdpReceiver {
  public:
   // Binds ADDR:PORT (SO_REUSEADDR + SO_REUSEPORT so several IG channel
   // processes can share a multicast port). A multicast bind address joins the
   // group on `interface_address` (default loopback). Throws NetError.
   explicit UdpReceiver(const std::string& bind_endpoint, const std::string& interface_address = "127.0.0.1");
-  ~UdpReceiver();
-  UdpReceiver(const UdpReceiver&) = delete;
-  UdpReceiver& operator=(const UdpReceiver&) = delete;
 
   using Handler = std::function<void(std::span<const std::uint8_t> datagram, double receive_time_s,
                                      const sockaddr_in& from)>;
@@ -55,13 +68,13 @@ class UdpReceiver {
   bool wait_readable(double timeout_s) const;
   const ReceiveStats& stats() const { return stats_; }
   std::uint16_t port() const;  // the bound port (useful with port 0)
-  int fd() const { return fd_; }
+  int fd() const { return fd_.get(); }
   // A reply from the bound port to `to` (a datagram's sender). false when
   // the kernel refused; never blocks for long, never throws.
   bool send_to(std::span<const std::uint8_t> datagram, const sockaddr_in& to);
 
  private:
-  int fd_ = -1;
+  UdpDescriptor fd_;
   ReceiveStats stats_;
 };
 
@@ -70,15 +83,12 @@ class UdpSender {
   // Unicast or multicast destination; multicast goes out on
   // `interface_address` with TTL 1 and loopback enabled.
   explicit UdpSender(const std::string& destination, const std::string& interface_address = "127.0.0.1");
-  ~UdpSender();
-  UdpSender(const UdpSender&) = delete;
-  UdpSender& operator=(const UdpSender&) = delete;
   // false when the kernel refused (counted by the caller); never throws.
   bool send(std::span<const std::uint8_t> datagram);
   bool send_to(std::span<const std::uint8_t> datagram, const sockaddr_in& to);
 
  private:
-  int fd_ = -1;
+  UdpDescriptor fd_;
   sockaddr_in destination_{};
 };
 

@@ -13,37 +13,30 @@ namespace {
 using namespace pose_filter_test;
 
 TEST(PoseFilter, LossBursts50Percent) {
-  const Truth tr = manoeuvre();
   StreamSpec sp;
   sp.loss_burst_prob = 1.0;
-  PoseFilter f;
-  const auto pk = make_stream(tr, sp, 5);
-  const auto st = run(f, tr, pk, sp.duration_s);
-  report("(c) 50% loss bursts", st, f);
-  EXPECT_EQ(st.nan, 0);
+  const ImpairedRun r(sp, 5, "(c) 50% loss bursts");
+  EXPECT_EQ(r.stats.nan, 0);
   // Gaps of up to 5 intervals exceed the 2-interval delay: short extrapolations.
-  EXPECT_LT(st.max_pos, 0.2);
-  EXPECT_LT(st.max_ang, 0.2);
-  EXPECT_GT(f.counters().extrapolations, 20u);
-  EXPECT_EQ(f.counters().accepted, pk.size());
-  EXPECT_NEAR(f.packet_interval_s(), 1.0 / kRate, 1e-6);  // loss does not inflate it
+  EXPECT_LT(r.stats.max_pos, 0.2);
+  EXPECT_LT(r.stats.max_ang, 0.2);
+  EXPECT_GT(r.filter.counters().extrapolations, 20u);
+  EXPECT_EQ(r.filter.counters().accepted, r.packets.size());
+  EXPECT_NEAR(r.filter.packet_interval_s(), 1.0 / kRate, 1e-6);  // loss does not inflate it
 }
 
 TEST(PoseFilter, Jitter100ms) {
-  const Truth tr = manoeuvre();
   StreamSpec sp;
   sp.jitter_s = 0.100;
-  PoseFilter f;
-  const auto pk = make_stream(tr, sp, 6);
-  const auto st = run(f, tr, pk, sp.duration_s, 1.0);
-  report("(d) 100 ms jitter", st, f);
-  EXPECT_EQ(st.nan, 0);
-  EXPECT_LT(st.max_pos, 1.0);
-  EXPECT_LT(st.max_ang, 1.0);
-  EXPECT_LT(st.max_timeline, 0.010);  // offset estimate: min of ~0.1 s uniform jitter
+  const ImpairedRun r(sp, 6, "(d) 100 ms jitter", 1.0);
+  const PoseFilter& f = r.filter;
+  EXPECT_EQ(r.stats.nan, 0);
+  EXPECT_LT(r.stats.max_pos, 1.0);
+  EXPECT_LT(r.stats.max_ang, 1.0);
+  EXPECT_LT(r.stats.max_timeline, 0.010);  // offset estimate: min of ~0.1 s uniform jitter
   // One interval + the jitter allowance (~100 ms of jitter, clamped at 100 ms).
   EXPECT_NEAR(f.playout_delay_s(), f.packet_interval_s() + std::min(f.jitter_s(), 0.100), 1e-9);
-  const Expected ex = expected_counts(pk);
+  const Expected ex = expected_counts(r.packets);
   EXPECT_EQ(f.counters().out_of_order, ex.out_of_order);
   EXPECT_GT(f.counters().late_inserted, ex.out_of_order * 9 / 10);
   expect_consistent(f);
@@ -52,7 +45,7 @@ TEST(PoseFilter, Jitter100ms) {
   PoseFilterOptions o;
   o.insert_late_packets = false;
   PoseFilter g(o);
-  const auto sg = run(g, tr, pk, sp.duration_s, 1.0);
+  const auto sg = run(g, r.truth, r.packets, r.spec.duration_s, 1.0);
   report("(d) 100 ms jitter, strict drop", sg, g);
   EXPECT_EQ(sg.nan, 0);
   EXPECT_EQ(g.counters().late_inserted, 0u);
@@ -61,20 +54,17 @@ TEST(PoseFilter, Jitter100ms) {
 }
 
 TEST(PoseFilter, ReorderingDuplicatesAndNonFinite) {
-  const Truth tr = manoeuvre();
   StreamSpec sp;
   sp.reorder_prob = 0.1;
   sp.duplicate_prob = 0.1;
   sp.nonfinite_prob = 0.02;
   sp.jitter_s = 0.004;
-  PoseFilter f;
-  const auto pk = make_stream(tr, sp, 7);
-  const auto st = run(f, tr, pk, sp.duration_s);
-  report("(e) reorder 10% dup 10%", st, f);
-  const Expected ex = expected_counts(pk);
+  const ImpairedRun r(sp, 7, "(e) reorder 10% dup 10%");
+  const PoseFilter& f = r.filter;
+  const Expected ex = expected_counts(r.packets);
   std::printf("[filter] (e) injected: dup %llu ooo %llu nonfinite %llu\n", (unsigned long long)ex.duplicates,
               (unsigned long long)ex.out_of_order, (unsigned long long)ex.non_finite);
-  EXPECT_EQ(st.nan, 0);
+  EXPECT_EQ(r.stats.nan, 0);
   EXPECT_GT(ex.duplicates, 20u);
   EXPECT_GT(ex.out_of_order, 20u);
   EXPECT_EQ(f.counters().duplicates, ex.duplicates);
@@ -82,8 +72,8 @@ TEST(PoseFilter, ReorderingDuplicatesAndNonFinite) {
   EXPECT_EQ(f.counters().non_finite, ex.non_finite);
   EXPECT_EQ(f.counters().time_jumps, 0u);
   expect_consistent(f);
-  EXPECT_LT(st.max_pos, 0.05);
-  EXPECT_LT(st.max_ang, 0.1);
+  EXPECT_LT(r.stats.max_pos, 0.05);
+  EXPECT_LT(r.stats.max_ang, 0.1);
 }
 
 TEST(PoseFilter, HostTimeJumpsBackAndForward) {

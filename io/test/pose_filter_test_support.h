@@ -265,6 +265,21 @@ inline void report(const char* name, const RunStats& s, const PoseFilter& f) {
               (unsigned long long)c.holds);
 }
 
+// The manoeuvre sent as `spec` describes (make_stream with `seed`) through a
+// default filter, run after `warmup` and reported as `name`.
+struct ImpairedRun {
+  ImpairedRun(const StreamSpec& s, std::uint32_t seed, const char* name, double warmup = 0.5)
+      : spec(s), packets(make_stream(truth, spec, seed)), stats(run(filter, truth, packets, spec.duration_s, warmup)) {
+    report(name, stats, filter);
+  }
+
+  Truth truth = manoeuvre();
+  StreamSpec spec;
+  std::vector<Packet> packets;
+  PoseFilter filter;
+  RunStats stats;
+};
+
 inline void expect_consistent(const PoseFilter& f) {
   const auto& c = f.counters();
   EXPECT_EQ(c.received, c.accepted + c.duplicates + (c.out_of_order - c.late_inserted) + c.non_finite);

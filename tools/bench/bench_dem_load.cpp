@@ -3,7 +3,6 @@
 //   build/bin/bench_dem_load [FILE] [--repeat N]
 // FILE defaults to $IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -16,19 +15,10 @@
 #include "terrain/dem_loader.h"
 
 int main(int argc, char** argv) {
-  const auto args = ig::bench::parse_dem_bench_args(argc, argv, "bench_dem_load");
-  if (!args) return 2;
-  const std::string& path = args->path;
-  const int repeat = args->repeat;
-  try {
-    using Clock = std::chrono::steady_clock;
+  return ig::bench::run_dem_bench(argc, argv, "bench_dem_load", [](const std::string& path, int repeat) {
     std::vector<double> load_ms, upload_ms;
     ig::terrain::Heightfield hf;
-    for (int k = 0; k < repeat; ++k) {
-      const auto t0 = Clock::now();
-      hf = ig::terrain::load_dem(path);
-      load_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    }
+    for (int k = 0; k < repeat; ++k) load_ms.push_back(ig::bench::time_ms([&] { hf = ig::terrain::load_dem(path); }));
     auto ctx = ig::gl::create_headless_context();
     for (int k = 0; k < repeat; ++k) {
       ig::render::TerrainScene scene(hf, ig::render::ShadingParams{});
@@ -43,8 +33,5 @@ int main(int argc, char** argv) {
     std::printf("height texture upload R32F (glTextureSubImage2D + glFinish), %d runs: median %.1f ms, max %.1f ms\n",
                 repeat, u.median, u.max);
     return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_dem_load: %s\n", e.what());
-    return 1;
-  }
+  });
 }

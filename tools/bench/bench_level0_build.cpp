@@ -4,7 +4,6 @@
 //   build/bin/bench_level0_build [FILE] [--repeat N]
 // FILE defaults to $IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -15,21 +14,15 @@
 #include "terrain/dem_loader.h"
 
 int main(int argc, char** argv) {
-  const auto args = ig::bench::parse_dem_bench_args(argc, argv, "bench_level0_build");
-  if (!args) return 2;
-  const std::string& path = args->path;
-  const int repeat = args->repeat;
-  try {
-    using Clock = std::chrono::steady_clock;
+  return ig::bench::run_dem_bench(argc, argv, "bench_level0_build", [](const std::string& path, int repeat) {
     const ig::terrain::Heightfield hf = ig::terrain::load_dem(path);
     std::printf("dem: %s (%dx%d, spacing %.1f x %.1f m, heights %.0f..%.0f m)\n", path.c_str(), hf.width,
                 hf.height, hf.spacing_x_m, hf.spacing_y_m, hf.min_m, hf.max_m);
     {
       std::vector<double> ms;
       for (int k = 0; k < repeat; ++k) {
-        const auto t0 = Clock::now();
-        const auto g = ig::lod::compute_level0_errors(hf);
-        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+        ig::lod::Level0ErrorGrid g;
+        ms.push_back(ig::bench::time_ms([&] { g = ig::lod::compute_level0_errors(hf); }));
         if (g.side == 0) return 1;
       }
       std::sort(ms.begin(), ms.end());
@@ -50,8 +43,5 @@ int main(int argc, char** argv) {
                   ms.back(), repeat);
     }
     return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_level0_build: %s\n", e.what());
-    return 1;
-  }
+  });
 }

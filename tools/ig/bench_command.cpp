@@ -25,6 +25,7 @@
 #include "session/bench_report.h"
 #include "session/bench_samples.h"
 #include "cli_args.h"
+#include "command_options.h"
 #include "commands.h"
 #include "gl/shader_program.h"
 #include "render/frame_renderer.h"
@@ -114,25 +115,20 @@ Args parse_args(const std::vector<std::string>& a) {
   Args args;
   CLI::App app("ig bench");
   std::optional<std::string> methods;
-  app.add_option("scenario", args.scenario, "the scenario whose path every method flies (docs/scenario.md)")
-      ->option_text("SCENARIO.json");
+  add_scenario_argument(app, args.scenario, "the scenario whose path every method flies (docs/scenario.md)");
   app.add_option("--methods", methods, "comma-separated method names, or all (default: all)")->option_text("LIST");
   app.add_flag("--sweep", args.sweep,
                "every knob value of each method's sweep (default: each method at its default knob only)");
-  app.add_option("--frames", args.frames,
-                 "N frames spread evenly over the flight, first and last included (default: every scenario frame)")
-      ->check(positive_int())
-      ->option_text("N");
+  add_count_option(app, "--frames", args.frames,
+                   "N frames spread evenly over the flight, first and last included (default: every scenario frame)");
   add_size_option(app, "--size", args.run.width, args.run.height)
       ->description("image size in pixels (default: the scenario's)")
       ->option_text("WxH");
   app.add_option("--fov", args.fov, "vertical field of view, degrees in (0, 179] (default: the scenario's)")
       ->check(positive_number())
       ->option_text("DEG");
-  app.add_option("--error-samples", args.error_samples,
-                 "frames compared with the reference, spread evenly over the timed ones (default 10)")
-      ->check(positive_int())
-      ->option_text("N");
+  add_count_option(app, "--error-samples", args.error_samples,
+                   "frames compared with the reference, spread evenly over the timed ones (default 10)");
   app.add_option("--match-px", args.match_px,
                  "horizon error in pixels for the matched-error table (default: the two-level method's at its "
                  "default knob)")
@@ -412,8 +408,9 @@ int run(const Args& args) {
       progress.step(label, i + 1, int(frames.size()));
     }
     row.frames = int(frames.size());
-    row.frame_ms_median = stats::percentiles(frame_ms).median;
-    row.frame_ms_p95 = stats::percentiles(frame_ms).p95;
+    const auto frame_ms_percentiles = stats::percentiles(frame_ms);
+    row.frame_ms_median = frame_ms_percentiles.median;
+    row.frame_ms_p95 = frame_ms_percentiles.p95;
     row.lod_ms_median = stats::percentiles(lod_ms).median;
     row.cpu_ms_median = stats::percentiles(cpu_ms).median;
     row.cores_median = stats::percentiles(cores).median;

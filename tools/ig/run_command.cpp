@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "command_options.h"
 #include "commands.h"
 #include "io/recording.h"
 #include "session/capture_schedule.h"
@@ -42,16 +43,13 @@ Args parse_args(const std::vector<std::string>& a) {
   Args args;
   CLI::App app("ig run");
   std::optional<std::string> vsync;
-  app.add_option("scenario", args.scenario, "the scenario file to replay (JSON, docs/scenario.md)")
-      ->option_text("SCENARIO.json");
+  add_scenario_argument(app, args.scenario, "the scenario file to replay (JSON, docs/scenario.md)");
   app.add_option("--out", args.out_dir, "output folder, created if missing (default out/<scenario name>)")
       ->option_text("DIR");
-  app.add_option("--frames", args.run.frames,
-                 "render the first N frames only (sim time 0 to (N-1) * time.step_s; default: the scenario's "
-                 "whole duration, or the recording's length); capture times after the last rendered frame are "
-                 "not saved, and ig run names them in a warning")
-      ->check(positive_int())
-      ->option_text("N");
+  add_count_option(app, "--frames", args.run.frames,
+                   "render the first N frames only (sim time 0 to (N-1) * time.step_s; default: the scenario's "
+                   "whole duration, or the recording's length); capture times after the last rendered frame are "
+                   "not saved, and ig run names them in a warning");
   app.add_option("--recording", args.recording,
                  "replay the pose datagrams of an IG recording (ig serve --record, ig send --record) through "
                  "the live decoders and pose filter on a simulated clock, instead of the scenario's path")

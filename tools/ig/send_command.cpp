@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "cli_args.h"
+#include "command_options.h"
 #include "commands.h"
 #include "io/net/udp_socket.h"
 #ifdef IG_WITH_CAN
@@ -69,8 +70,7 @@ Args parse_args(const std::vector<std::string>& a) {
   CLI::App app("ig send");
   std::string protocol = "native";
   std::optional<std::string> stall_ms;
-  app.add_option("scenario", args.scenario, "the scenario whose path is sent (docs/scenario.md)")
-      ->option_text("SCENARIO.json");
+  add_scenario_argument(app, args.scenario, "the scenario whose path is sent (docs/scenario.md)");
   auto* to = app.add_option("--to", args.to, "where to send the pose datagrams (unicast or multicast)")
                  ->option_text("ADDR:PORT");
   app.add_option("--protocol", protocol,
@@ -89,22 +89,17 @@ Args parse_args(const std::vector<std::string>& a) {
   };
   add_probability("--loss", args.loss, "a packet is dropped");
   add_probability("--burst-loss", args.burst_loss, "a burst of --burst-length packets is dropped");
-  app.add_option("--burst-length", args.burst_length, "packets a loss burst drops (default 10)")
-      ->check(positive_int())
-      ->option_text("N");
+  add_count_option(app, "--burst-length", args.burst_length, "packets a loss burst drops (default 10)");
   app.add_option("--jitter-ms", args.jitter_ms, "each send time delayed by up to J ms, uniformly (default 0)")
       ->check(positive_number())
       ->option_text("J");
   add_probability("--reorder", args.reorder, "a packet is overtaken by the next");
   add_probability("--duplicate", args.duplicate, "a packet is sent twice");
   add_probability("--corrupt", args.corrupt, "a packet has a byte changed");
-  app.add_option("--seed", args.seed, "seed of the impairments' random draws (default 1)")
-      ->check(positive_int())
-      ->option_text("N");
-  app.add_option("--flood", args.flood, "send N packets as fast as the socket takes them (no pacing), each the path "
-                                         "at the moment it is sent")
-      ->check(positive_int())
-      ->option_text("N");
+  add_count_option(app, "--seed", args.seed, "seed of the impairments' random draws (default 1)");
+  add_count_option(app, "--flood", args.flood,
+                   "send N packets as fast as the socket takes them (no pacing), each the path at the moment it is "
+                   "sent");
   auto* cigi_listen = app.add_option("--cigi-listen", args.cigi_listen,
                                      "collect the IG's CIGI Start Of Frame replies there and report their count and "
                                      "whether the frame counter always increased")
@@ -116,14 +111,11 @@ Args parse_args(const std::vector<std::string>& a) {
   app.add_flag("--no-timestamp", args.no_timestamp,
                "no sender time (CIGI: timestamp-valid bit clear, as CigiMiniHost; native: no sender-time field); "
                "FGNetFDM never has one");
-  app.add_option("--pairs", args.pairs, "every Nth packet is held up and sent back to back with the next (N >= 2)")
-      ->check(positive_int())
-      ->option_text("N");
-  app.add_option("--stall-every", args.stall_every,
-                 "every N packets the host's own frame stalls, as FlightGear's main loop does: gaps of A then B "
-                 "ms (--stall-ms), each pose taken when it is sent")
-      ->check(positive_int())
-      ->option_text("N");
+  add_count_option(app, "--pairs", args.pairs,
+                   "every Nth packet is held up and sent back to back with the next (N >= 2)");
+  add_count_option(app, "--stall-every", args.stall_every,
+                   "every N packets the host's own frame stalls, as FlightGear's main loop does: gaps of A then B "
+                   "ms (--stall-ms), each pose taken when it is sent");
   app.add_option("--stall-ms", stall_ms, "the two stall gaps of --stall-every, milliseconds (default 133,17)")
       ->option_text("A,B");
   app.add_option("--log", args.log,

@@ -56,13 +56,26 @@ void expect_really_hidden(const ig::terrain::Heightfield& hf, const ig::terrain:
   }
 }
 
+// A side x side DEM, samples 10 m apart, flat at 0 m but for a 2000 m wall
+// along columns first..last.
+ig::terrain::Heightfield wall_dem(int side, int first, int last) {
+  return lod_checks::heightfield_from(side, side, 10.0, 10.0,
+                                      [=](int i, int) { return i >= first && i <= last ? 2000.0 : 0.0; });
+}
+
+// A 257^2 wall DEM (the wall 400 m thick, 1040 m east) in blocks of 16
+// samples, and an eye in front of the wall, 100 m up.
+struct WallAhead {
+  const ig::terrain::Heightfield hf = wall_dem(257, 104, 144);
+  const ig::terrain::HeightPyramid pyramid{hf};
+  DrawnSurfaceOcclusion occlusion{hf, pyramid, 16};
+  const std::vector<HorizonCulling::Box> boxes = blocks(hf, 16);
+  const glm::dvec3 eye{500.0, 1280.0, 100.0};
+};
+
 TEST(DrawnSurfaceOcclusion, WallHidesTheBlocksBehindIt) {
-  const auto hf = lod_checks::heightfield_from(257, 257, 10.0, 10.0,
-                                               [](int i, int) { return i >= 104 && i <= 144 ? 2000.0 : 0.0; });
-  const ig::terrain::HeightPyramid pyramid(hf);
-  DrawnSurfaceOcclusion occlusion(hf, pyramid, 16);
-  const auto boxes = blocks(hf, 16);
-  const glm::dvec3 eye(500.0, 1280.0, 100.0);  // in front of the wall, 100 m up
+  WallAhead w;
+  auto& [hf, pyramid, occlusion, boxes, eye] = w;
   std::vector<std::uint8_t> hidden;
   const int count = occlusion.mark_hidden(eye, 0.0, 5.0, boxes, hidden, occlusion.dem_max_near(eye, 1));
   int behind = 0, behind_hidden = 0, in_front_hidden = 0;
@@ -77,13 +90,9 @@ TEST(DrawnSurfaceOcclusion, WallHidesTheBlocksBehindIt) {
 }
 
 TEST(DrawnSurfaceOcclusion, NothingHiddenWhileTheEyeIsUnderTheDrawnSurface) {
-  const auto hf = lod_checks::heightfield_from(257, 257, 10.0, 10.0,
-                                               [](int i, int) { return i >= 104 && i <= 144 ? 2000.0 : 0.0; });
-  const ig::terrain::HeightPyramid pyramid(hf);
-  DrawnSurfaceOcclusion occlusion(hf, pyramid, 16);
-  const auto boxes = blocks(hf, 16);
+  WallAhead w;
+  auto& [hf, pyramid, occlusion, boxes, eye] = w;
   std::vector<std::uint8_t> hidden;
-  const glm::dvec3 eye(500.0, 1280.0, 100.0);
   // A coarse piece over the eye may draw above it (a triangle reaching a
   // higher sample): then the eye may be under the surface.
   EXPECT_EQ(occlusion.mark_hidden(eye, 0.0, 5.0, boxes, hidden, 150.0), 0);
@@ -122,8 +131,7 @@ TEST(DrawnSurfaceOcclusion, HiddenBlocksHaveNoVisiblePoint) { check_random_views
 TEST(DrawnSurfaceOcclusion, HiddenBlocksHaveNoVisiblePointWithEarthCurvature) { check_random_views(30000.0); }
 
 TEST(DrawnSurfaceOcclusion, CulledTriangleListKeepsItsOrder) {
-  const auto hf = lod_checks::heightfield_from(129, 129, 10.0, 10.0,
-                                               [](int i, int) { return i >= 52 && i <= 72 ? 2000.0 : 0.0; });
+  const auto hf = wall_dem(129, 52, 72);
   const ig::terrain::HeightPyramid pyramid(hf);
   std::vector<glm::u16vec2> all;  // the full grid, two triangles a cell
   for (int j = 0; j < hf.height - 1; ++j)

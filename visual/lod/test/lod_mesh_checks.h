@@ -2,8 +2,9 @@
 // Checks shared by the view-dependent LOD structure tests (ROAM, quadtree):
 // the eyes they are checked from, watertightness of a triangle list of DEM
 // sample indices, and the reference surface the error bounds are measured
-// against, and the checks of a tessellator's claimed bound that both share.
-// Their small test terrains are in lod_test_terrain.h.
+// against, and the checks both run on a tessellator: its claimed bound, its
+// culling and its refusal of bad input. Their small test terrains are in
+// lod_test_terrain.h.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -161,20 +163,66 @@ void expect_bound_covers_every_output_point(const std::vector<ig::terrain::Heigh
   }
 }
 
-// Stepping the knob from least to most accurate, select(tessellator, knob)
-// gives strictly more triangles and a claimed bound never larger each time.
+// Stepping the knob from least to most accurate, select(tessellator, eye,
+// knob) of a 257^2 landscape seen from 300 m over its highest point gives
+// strictly more triangles and a claimed bound never larger each time.
 template <class Tessellator, class Select>
-void expect_more_triangles_and_no_larger_bound(Tessellator& t, std::initializer_list<double> knobs,
-                                               const std::string& knob_label, Select select) {
+void expect_more_triangles_and_no_larger_bound(std::initializer_list<double> knobs, const std::string& knob_label,
+                                               Select select) {
+  const auto hf = synthetic(257);
+  Tessellator t(hf);
+  const glm::dvec3 eye(0.2 * hf.extent_x_m(), 0.3 * hf.extent_y_m(), hf.max_m + 300.0);
   long long prev_tris = 0;
   double prev_bound = std::numeric_limits<double>::infinity();
   for (double knob : knobs) {
-    const auto s = select(t, knob).stats;
+    const auto s = select(t, eye, knob).stats;
     EXPECT_GT(s.triangles, prev_tris) << knob_label << " " << knob;
     EXPECT_LE(s.max_error_ratio, prev_bound) << knob_label << " " << knob;
     prev_tris = s.triangles;
     prev_bound = s.max_error_ratio;
   }
+}
+
+// A tessellator of a 129^2 landscape seen from 50 m over its highest point
+// at its centre, selected by `select(tessellator, eye, in_view)` whole (all:
+// its counts) and with a view of everything east of the eye only (east),
+// which must draw fewer than 3/4 of the triangles and cull something. The
+// rest is for the tessellator's own checks.
+template <class Tessellator>
+struct EastOfEyeCulling {
+  using Selection = decltype(std::declval<Tessellator&>().select(glm::dvec3(), 1.0, 1.0));
+
+  template <class Select>
+  explicit EastOfEyeCulling(Select select)
+      : all(select(tessellator, eye, {}).stats),
+        east(select(tessellator, eye, [](const glm::dvec3&, const glm::dvec3& hi) { return hi.x >= 0.0; })) {
+    EXPECT_LT(east.stats.triangles, all.triangles * 3 / 4);
+    EXPECT_GT(east.stats.culled, 0);
+  }
+
+  ig::terrain::Heightfield hf = synthetic(129);
+  Tessellator tessellator{hf};
+  glm::dvec3 eye{0.5 * hf.extent_x_m(), 0.5 * hf.extent_y_m(), hf.max_m + 50.0};
+  decltype(Selection::stats) all;
+  Selection east;
+};
+
+// The tessellator refuses a DEM of tiny_w x tiny_h samples and one with no
+// spacing; `select_bad(tessellator)` then checks its refusals of bad
+// selection arguments on a 17^2 landscape.
+template <class Tessellator, class SelectBad>
+void expect_rejects_bad_input(int tiny_w, int tiny_h, SelectBad select_bad) {
+  ig::terrain::Heightfield tiny;
+  tiny.width = tiny_w;
+  tiny.height = tiny_h;
+  tiny.heights.assign(std::size_t(tiny_w) * tiny_h, 0.0f);
+  EXPECT_THROW(Tessellator{tiny}, std::invalid_argument);
+  ig::terrain::Heightfield flat_spacing = synthetic(17);
+  flat_spacing.spacing_x_m = 0.0;
+  EXPECT_THROW(Tessellator{flat_spacing}, std::invalid_argument);
+  const auto hf = synthetic(17);
+  Tessellator t(hf);
+  select_bad(t);
 }
 
 }  // namespace lod_checks

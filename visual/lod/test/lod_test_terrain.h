@@ -1,9 +1,10 @@
 #pragma once
 // Small test terrains shared by the LOD tests (unit and GL): a heightfield
-// from a formula (bumps, planes), a synthetic landscape, and the south-west
-// corner of one cropped to any size.
+// from a formula (bumps, planes), a synthetic landscape, the south-west
+// corner of one cropped to any size, and a set of those of many sizes.
 #include <algorithm>
 #include <functional>
+#include <vector>
 
 #include "terrain/heightfield.h"
 #include "terrain/synthetic_terrain.h"
@@ -39,6 +40,11 @@ inline ig::terrain::Heightfield cropped(int w, int h, unsigned seed = 5) {
   while (n < std::max(w, h)) n = 2 * n - 1;
   const auto full = synthetic(n, seed);
   return heightfield_from(w, h, full.spacing_x_m, full.spacing_y_m, [&](int i, int j) { return full.at(i, j); });
+}
+
+// A 65^2 landscape and crops of it: odd, non-square, thin and tiny.
+inline std::vector<ig::terrain::Heightfield> dems_of_many_sizes() {
+  return {synthetic(65), cropped(70, 37), cropped(33, 100), cropped(2, 2), cropped(3, 6)};
 }
 
 }  // namespace lod_checks

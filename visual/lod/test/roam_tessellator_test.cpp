@@ -51,13 +51,7 @@ TEST(RoamPatchGrid, ClippingKeepsIntegerSamplesAndArea) {
 }
 
 TEST(RoamTessellator, OutputIsWatertightForManyViewsSizesAndTolerances) {
-  std::vector<Heightfield> dems;
-  dems.push_back(lod_checks::synthetic(65));
-  dems.push_back(lod_checks::cropped(70, 37));
-  dems.push_back(lod_checks::cropped(33, 100));
-  dems.push_back(lod_checks::cropped(2, 2));
-  dems.push_back(lod_checks::cropped(3, 6));
-  for (const auto& hf : dems) {
+  for (const auto& hf : lod_checks::dems_of_many_sizes()) {
     RoamTessellator roam(hf);
     for (const auto& eye : eyes_for(hf))
       for (double tau : {0.0, 0.5, 2.0, 8.0, 1000.0}) {
@@ -123,12 +117,9 @@ TEST(RoamTessellator, ErrorBoundCoversEveryOutputPoint) {
 }
 
 TEST(RoamTessellator, SmallerToleranceGivesMoreTrianglesAndASmallerBound) {
-  const auto hf = lod_checks::synthetic(257);
-  RoamTessellator roam(hf);
-  const glm::dvec3 eye(0.2 * hf.extent_x_m(), 0.3 * hf.extent_y_m(), hf.max_m + 300.0);
-  lod_checks::expect_more_triangles_and_no_larger_bound(
-      roam, {16.0, 8.0, 4.0, 2.0, 1.0}, "tau",
-      [&](RoamTessellator& t, double tau) { return t.select(eye, tau, kPixelsPerRadian); });
+  lod_checks::expect_more_triangles_and_no_larger_bound<RoamTessellator>(
+      {16.0, 8.0, 4.0, 2.0, 1.0}, "tau",
+      [](RoamTessellator& t, const glm::dvec3& eye, double tau) { return t.select(eye, tau, kPixelsPerRadian); });
 }
 
 TEST(RoamTessellator, PlanesNeedOnlyTheRootTriangles) {
@@ -141,16 +132,13 @@ TEST(RoamTessellator, PlanesNeedOnlyTheRootTriangles) {
 }
 
 TEST(RoamTessellator, CulledSubtreesAreNotRefined) {
-  const auto hf = lod_checks::synthetic(129);
-  RoamTessellator roam(hf);
-  const glm::dvec3 eye(0.5 * hf.extent_x_m(), 0.5 * hf.extent_y_m(), hf.max_m + 50.0);
-  const auto all = roam.select(eye, 1.0, kPixelsPerRadian).stats;
-  // A "view" of everything east of the eye only.
-  const ig::lod::BoxInView east = [](const glm::dvec3&, const glm::dvec3& hi) { return hi.x >= 0.0; };
-  const auto sel = roam.select(eye, 1.0, kPixelsPerRadian, east);
+  // Whole, and with a "view" of everything east of the eye only.
+  const lod_checks::EastOfEyeCulling<RoamTessellator> culling(
+      [](RoamTessellator& roam, const glm::dvec3& eye, const ig::lod::BoxInView& in_view) {
+        return roam.select(eye, 1.0, kPixelsPerRadian, in_view);
+      });
+  const auto& [hf, roam, eye, all, sel] = culling;
   EXPECT_LT(sel.stats.nodes, all.nodes * 3 / 4);
-  EXPECT_LT(sel.stats.triangles, all.triangles * 3 / 4);
-  EXPECT_GT(sel.stats.culled, 0);
   const auto& v = sel.vertices;
   for (size_t t = 0; t < v.size(); t += 3) {
     const double max_x = std::max({v[t].x, v[t + 1].x, v[t + 2].x}) * hf.spacing_x_m;
@@ -159,19 +147,11 @@ TEST(RoamTessellator, CulledSubtreesAreNotRefined) {
 }
 
 TEST(RoamTessellator, RejectsBadInput) {
-  Heightfield tiny;
-  tiny.width = 1;
-  tiny.height = 4;
-  tiny.heights.assign(4, 0.0f);
-  EXPECT_THROW(RoamTessellator{tiny}, std::invalid_argument);
-  Heightfield flat_spacing = lod_checks::synthetic(17);
-  flat_spacing.spacing_x_m = 0.0;
-  EXPECT_THROW(RoamTessellator{flat_spacing}, std::invalid_argument);
-  const auto hf = lod_checks::synthetic(17);
-  RoamTessellator roam(hf);
-  EXPECT_THROW(roam.select({0, 0, 100}, -1.0, kPixelsPerRadian), std::invalid_argument);
-  EXPECT_THROW(roam.select({0, 0, 100}, std::nan(""), kPixelsPerRadian), std::invalid_argument);
-  EXPECT_THROW(roam.select({std::nan(""), 0, 100}, 1.0, kPixelsPerRadian), std::invalid_argument);
+  lod_checks::expect_rejects_bad_input<RoamTessellator>(1, 4, [](RoamTessellator& roam) {
+    EXPECT_THROW(roam.select({0, 0, 100}, -1.0, kPixelsPerRadian), std::invalid_argument);
+    EXPECT_THROW(roam.select({0, 0, 100}, std::nan(""), kPixelsPerRadian), std::invalid_argument);
+    EXPECT_THROW(roam.select({std::nan(""), 0, 100}, 1.0, kPixelsPerRadian), std::invalid_argument);
+  });
 }
 
 }  // namespace

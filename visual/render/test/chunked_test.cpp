@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "render/test/lod_view_checks.h"
+#include "render/test/method_frames_fixture.h"
 #include "render/chunked_method.h"
 
 namespace {
@@ -16,12 +16,10 @@ namespace {
 using ig::render::ChunkedMethod;
 using lod_views::Frame;
 
-class ChunkedTest : public lod_views::ReferenceFramesTest {};
+class ChunkedTest : public lod_views::MethodFramesTest<ChunkedMethod> {};
 
 TEST_F(ChunkedTest, NoHolesAgainstTheReference) {
-  ChunkedMethod method(*world_->scene, world_->shader_dir, 1.0);
-  lod_views::expect_every_view_without_holes(*world_, *reference_, method, "chunked",
-                                             [](const std::string&, const Frame&) {});
+  expect_every_view_without_holes(1.0, "chunked", [](const std::string&, const Frame&) {});
 }
 
 // The height of a chunk's mesh edge at sample t along a side (the edge is
@@ -44,7 +42,7 @@ TEST_F(ChunkedTest, SkirtsCloseEveryGapBetweenDrawnChunks) {
   std::string first_uncovered;
   double widest_gap = 0.0;
   for (double tau : {4.0, 1.0}) {
-    ChunkedMethod method(*world_->scene, world_->shader_dir, tau);
+    auto method = make(tau);
     for (const auto& v : lod_views::views(hf)) {
       method.update(v.camera);
       const auto& drawn = method.drawn();
@@ -81,29 +79,20 @@ TEST_F(ChunkedTest, SkirtsCloseEveryGapBetweenDrawnChunks) {
 }
 
 TEST_F(ChunkedTest, SmallerTauMeansMoreTrianglesAndASmallerClaimedError) {
-  const auto views = lod_views::views(world_->hf);
-  for (const auto& v : {views[0], views[1]}) {
-    lod_views::SweepChecks sweep(v.name, "tau");
-    for (double tau : ig::render::knob_sweep("chunked")) {
-      ChunkedMethod method(*world_->scene, world_->shader_dir, tau);
-      const Frame f = lod_views::render(*world_, method, v.camera);
-      std::printf("chunked %-8s tau %5.2f px  triangles %8lld  bound %7.2f px  chunks %3.0f  lod %.2f ms\n",
-                  v.name.c_str(), tau, f.stats.triangles, f.bound_px, f.stats.columns[0].second, f.lod_ms);
-      EXPECT_LE(f.bound_px, tau + 1e-9) << "a drawn chunk is within tau or a leaf (exact)";
-      sweep.add(f, tau);
-    }
-    sweep.finish();
-  }
+  expect_knob_sweep("chunked", "tau", [](const lod_views::View& v, double tau, const Frame& f, const ChunkedMethod&) {
+    std::printf("chunked %-8s tau %5.2f px  triangles %8lld  bound %7.2f px  chunks %3.0f  lod %.2f ms\n",
+                v.name.c_str(), tau, f.stats.triangles, f.bound_px, f.stats.columns[0].second, f.lod_ms);
+    EXPECT_LE(f.bound_px, tau + 1e-9) << "a drawn chunk is within tau or a leaf (exact)";
+  });
 }
 
 TEST_F(ChunkedTest, RegisteredWithItsKnob) {
   ASSERT_NO_FATAL_FAILURE(lod_views::expect_registered_with_knob(*world_, "chunked", "tau_px", 6.0, false));
-  EXPECT_THROW(ChunkedMethod(*world_->scene, world_->shader_dir, -1.0), std::invalid_argument);
+  EXPECT_THROW(make(-1.0), std::invalid_argument);
 }
 
 TEST_F(ChunkedTest, DemsOfAnySizeRenderWithoutHoles) {
-  lod_views::expect_odd_sized_dems_render_without_holes(
-      *world_, [](const auto& scene) { return std::make_unique<ChunkedMethod>(scene, world_->shader_dir, 1.0); });
+  lod_views::expect_odd_sized_dems_render_without_holes(*world_, maker(1.0));
 }
 
 }  // namespace

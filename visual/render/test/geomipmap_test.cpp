@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "render/test/lod_view_checks.h"
+#include "render/test/method_frames_fixture.h"
 #include "render/geomipmap_method.h"
 
 namespace {
@@ -14,21 +14,19 @@ namespace {
 using ig::render::GeoMipMapMethod;
 using lod_views::Frame;
 
-class GeoMipMapTest : public lod_views::ReferenceFramesTest {};
+class GeoMipMapTest : public lod_views::MethodFramesTest<GeoMipMapMethod> {};
 
 TEST_F(GeoMipMapTest, NoHolesAgainstTheReference) {
-  GeoMipMapMethod method(*world_->scene, world_->shader_dir, 1.0);
-  lod_views::expect_every_view_without_holes(*world_, *reference_, method, "geomipmap",
-                                             [](const std::string&, const Frame& f) {
-                                               EXPECT_EQ(f.stats.passes, "terrain+sky");
-                                             });
+  expect_every_view_without_holes(1.0, "geomipmap", [](const std::string&, const Frame& f) {
+    EXPECT_EQ(f.stats.passes, "terrain+sky");
+  });
 }
 
 // CPU side of the crack check on the live selection: every pair of drawn
 // neighbours draws its shared side at one stride (the coarser level's), and
 // a stitched side is never finer than the block's own level.
 TEST_F(GeoMipMapTest, DrawnNeighboursAgreeOnTheirSharedSide) {
-  GeoMipMapMethod method(*world_->scene, world_->shader_dir, 1.0);
+  auto method = make(1.0);
   int stitched = 0, pairs = 0;
   for (const auto& v : lod_views::views(world_->hf)) {
     lod_views::render(*world_, method, v.camera);
@@ -58,36 +56,28 @@ TEST_F(GeoMipMapTest, DrawnNeighboursAgreeOnTheirSharedSide) {
 }
 
 TEST_F(GeoMipMapTest, SmallerTauMeansMoreTrianglesAndASmallerClaimedError) {
-  const auto views = lod_views::views(world_->hf);
-  for (const auto& v : {views[0], views[1]}) {
-    lod_views::SweepChecks sweep(v.name, "tau");
-    for (double tau : ig::render::knob_sweep("geomipmap")) {
-      GeoMipMapMethod method(*world_->scene, world_->shader_dir, tau);
-      const Frame f = lod_views::render(*world_, method, v.camera);
-      std::printf("geomipmap %-8s tau %5.2f px  triangles %8lld  bound %7.2f px  lod %.2f ms\n", v.name.c_str(), tau,
-                  f.stats.triangles, f.bound_px, f.lod_ms);
-      sweep.add(f, tau);
-      // Unstitched blocks meet the tolerance by construction.
-      const double ppr = ig::render::pixels_per_radian(v.camera, lod_views::kH);
-      for (const auto& d : method.drawn())
-        if (!d.config.stitched()) {
-          EXPECT_LE(d.error_m / std::max(d.distance_m, v.camera.near_m) * ppr, tau + 1e-9);
-        }
-    }
-    sweep.finish();
-  }
+  expect_knob_sweep("geomipmap", "tau",
+                    [](const lod_views::View& v, double tau, const Frame& f, const GeoMipMapMethod& method) {
+                      std::printf("geomipmap %-8s tau %5.2f px  triangles %8lld  bound %7.2f px  lod %.2f ms\n",
+                                  v.name.c_str(), tau, f.stats.triangles, f.bound_px, f.lod_ms);
+                      // Unstitched blocks meet the tolerance by construction.
+                      const double ppr = ig::render::pixels_per_radian(v.camera, lod_views::kH);
+                      for (const auto& d : method.drawn())
+                        if (!d.config.stitched()) {
+                          EXPECT_LE(d.error_m / std::max(d.distance_m, v.camera.near_m) * ppr, tau + 1e-9);
+                        }
+                    });
 }
 
 TEST_F(GeoMipMapTest, RegisteredWithItsKnob) {
   ASSERT_NO_FATAL_FAILURE(lod_views::expect_registered_with_knob(*world_, "geomipmap", "tau_px", 3.5, false));
-  EXPECT_THROW(GeoMipMapMethod(*world_->scene, world_->shader_dir, 0.0), std::invalid_argument);
-  EXPECT_THROW(GeoMipMapMethod(*world_->scene, world_->shader_dir, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(make(0.0), std::invalid_argument);
+  EXPECT_THROW(make(std::nan("")), std::invalid_argument);
 }
 
 TEST_F(GeoMipMapTest, DemsOfAnySizeRenderWithoutHoles) {
   lod_views::expect_odd_sized_dems_render_without_holes(
-      *world_, [](const auto& scene) { return std::make_unique<GeoMipMapMethod>(scene, world_->shader_dir, 1.0); },
-      [](const Frame& f, const ig::terrain::Heightfield& hf) {
+      *world_, maker(1.0), [](const Frame& f, const ig::terrain::Heightfield& hf) {
         EXPECT_LE(f.stats.triangles, 2LL * (hf.width - 1) * (hf.height - 1)) << hf.source;
       });
 }

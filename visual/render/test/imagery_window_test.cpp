@@ -85,22 +85,54 @@ std::shared_ptr<std::vector<std::uint8_t>> random_rgb(int fw, int fh, unsigned s
   return rgb;
 }
 
-TEST(ImageryWindowTexture, ToroidalUpdatesMatchAFullUpload) {
-  const auto context = ig::gl::create_headless_context();
-  constexpr int kDemW = 97, kDemH = 75, kStep = 2, kSize = 24;
-  const int fw = kDemW * kStep, fh = kDemH * kStep;
-  const auto rgb = random_rgb(fw, fh, 11);
-  // The full image in one texture, as the scene makes it when it fits.
-  const std::vector<std::uint8_t> full_texels = upload_and_read(*rgb, fw, fh);
-  // Tiles of 8 in a budget of what a 24-window needs: the path's jumps evict.
-  const ig::terrain::Imagery img =
-      paged_imagery(kDemW, kDemH, kStep, rgb, 8, ig::terrain::imagery_window_budget(kSize, 8), std::make_shared<Gate>());
+// A 24-pixel window over random imagery of a 97 x 75 DEM at 2 pixels a
+// sample, paged in tiles of 8 through a cache whose budget is what the
+// window needs (so the path's jumps evict), its reads stopped by `gate`;
+// full_texels: the whole image uploaded as one texture, as the scene makes
+// it when it fits.
+struct RandomImageryWindow {
+  static constexpr int kDemW = 97, kDemH = 75, kStep = 2, kSize = 24;
+  static constexpr int fw = kDemW * kStep, fh = kDemH * kStep;
+  std::unique_ptr<ig::gl::GlContext> context = ig::gl::create_headless_context();
+  std::shared_ptr<Gate> gate = std::make_shared<Gate>();
+  std::shared_ptr<std::vector<std::uint8_t>> rgb;
+  std::vector<std::uint8_t> full_texels;
+  ig::render::ImageryWindowTexture window;
 
-  ig::render::ImageryWindowTexture window(img, kDemW, kDemH, kSize, "test imagery window");
+  explicit RandomImageryWindow(unsigned seed)
+      : rgb(random_rgb(fw, fh, seed)),
+        full_texels(upload_and_read(*rgb, fw, fh)),
+        window(paged_imagery(kDemW, kDemH, kStep, rgb, 8, ig::terrain::imagery_window_budget(kSize, 8), gate), kDemW,
+               kDemH, kSize, "test imagery window") {}
+};
+
+// A GeoTIFF 3x finer than a 61 x 49 DEM, tiled, written as `name` (removed
+// again on destruction), and the one-texture in-memory warp of it.
+struct RealImagery {
+  ig::terrain::Heightfield hf = imagery_test::dem(61, 49);
+  std::string path;
+  ig::terrain::Imagery whole;
+  std::vector<std::uint8_t> full_texels;
+
+  explicit RealImagery(const std::string& name) {
+    const double k = imagery_test::kRes;
+    const double gt[6] = {-118.0 - 0.5 * k - 0.01, k / 3, 0, 37.0 + 0.5 * k + 0.01, 0, -k / 3};
+    path = imagery_test::write_image(name, 4326, gt, 400, 400, /*tiled=*/true);
+    whole = ig::terrain::load_imagery(hf, path, 16384);
+    full_texels = upload_and_read(whole.rgb, whole.width, whole.height);
+  }
+  ~RealImagery() { std::filesystem::remove(path); }
+};
+
+TEST(ImageryWindowTexture, ToroidalUpdatesMatchAFullUpload) {
+  RandomImageryWindow t(11);
+  using W = RandomImageryWindow;
+  constexpr int kStep = W::kStep, kSize = W::kSize, fw = W::fw, fh = W::fh;
+  auto& window = t.window;
   ASSERT_EQ(window.size(), glm::ivec2(kSize, kSize));
   ASSERT_EQ(window.full_size(), glm::ivec2(fw, fh));
   const long long total = window_checks::expect_window_follows_path<std::uint8_t>(
-      kSize, fw, full_texels, 3,
+      kSize, fw, t.full_texels, 3,
       [&](glm::ivec2 c) {
         // Moved at once if its tiles are resident, else held until they are
         // (the held case is the next test).
@@ -123,15 +155,11 @@ TEST(ImageryWindowTexture, ToroidalUpdatesMatchAFullUpload) {
 }
 
 TEST(ImageryWindowTexture, AMoveWhoseTilesAreNotResidentIsHeldNotWaitedFor) {
-  const auto context = ig::gl::create_headless_context();
-  constexpr int kDemW = 97, kDemH = 75, kStep = 2, kSize = 24;
-  const int fw = kDemW * kStep, fh = kDemH * kStep;
-  const auto rgb = random_rgb(fw, fh, 5);
-  const std::vector<std::uint8_t> full_texels = upload_and_read(*rgb, fw, fh);
-  auto gate = std::make_shared<Gate>();
-  const ig::terrain::Imagery img =
-      paged_imagery(kDemW, kDemH, kStep, rgb, 8, ig::terrain::imagery_window_budget(kSize, 8), gate);
-  ig::render::ImageryWindowTexture window(img, kDemW, kDemH, kSize, "test imagery window");
+  RandomImageryWindow t(5);
+  using W = RandomImageryWindow;
+  constexpr int kSize = W::kSize, fw = W::fw, fh = W::fh;
+  auto& window = t.window;
+  auto& gate = t.gate;
   const auto& cache = window.cache();
   EXPECT_EQ(window.centre_on_sample({20, 20}, /*wait=*/true), kSize * kSize);  // the first fill, at load
   cache.wait_idle();
@@ -156,7 +184,7 @@ TEST(ImageryWindowTexture, AMoveWhoseTilesAreNotResidentIsHeldNotWaitedFor) {
   EXPECT_EQ(uploaded, kSize * kSize);  // a jump: the whole window, once
   const glm::ivec2 o = window.origin();
   EXPECT_EQ(o, glm::ivec2(std::clamp(161 - kSize / 2, 0, fw - kSize), std::clamp(121 - kSize / 2, 0, fh - kSize)));
-  window_checks::expect_window_holds(ig::gl::read_imagery_texels(window.id(), kSize, kSize), kSize, o, full_texels, fw, 3);
+  window_checks::expect_window_holds(ig::gl::read_imagery_texels(window.id(), kSize, kSize), kSize, o, t.full_texels, fw, 3);
   EXPECT_EQ(cache.stats().misses, load_misses);  // no move read a tile itself
   EXPECT_EQ(window.stats().moves, 2);
 }
@@ -166,32 +194,28 @@ TEST(ImageryWindowTexture, AMoveWhoseTilesAreNotResidentIsHeldNotWaitedFor) {
 // the one-texture in-memory warp of the same image holds.
 TEST(ImageryWindowTexture, PagedGdalImageryEqualsTheInMemoryWarp) {
   const auto context = ig::gl::create_headless_context();
-  const auto hf = imagery_test::dem(61, 49);
-  const double k = imagery_test::kRes;
-  const double gt[6] = {-118.0 - 0.5 * k - 0.01, k / 3, 0, 37.0 + 0.5 * k + 0.01, 0, -k / 3};
-  const auto path = imagery_test::write_image("ig_imagery_window.tif", 4326, gt, 400, 400, /*tiled=*/true);
-  const auto whole = ig::terrain::load_imagery(hf, path, 16384);
+  const RealImagery real("ig_imagery_window.tif");
+  const auto& hf = real.hf;
+  const auto& whole = real.whole;
   constexpr int kSize = 40;
   ig::terrain::ImageryPaging paging;
   paging.budget_bytes = 1;
   paging.tile = 16;
   paging.window_side = kSize;
-  const auto img = ig::terrain::load_imagery(hf, path, 50, paging);
+  const auto img = ig::terrain::load_imagery(hf, real.path, 50, paging);
   ASSERT_TRUE(img.paged);
   ASSERT_EQ(img.full_width(), whole.width);
-  const std::vector<std::uint8_t> full_texels = upload_and_read(whole.rgb, whole.width, whole.height);
   ig::render::ImageryWindowTexture window(img, hf.width, hf.height, kSize, "test imagery window");
   for (const glm::ivec2 c : {glm::ivec2{30, 24}, {33, 25}, {5, 3}, {60, 48}, {40, 10}}) {
     SCOPED_TRACE(testing::Message() << "centre " << c.x << "," << c.y);
     window.centre_on_sample(c);
     window.cache().wait_idle();
     window.centre_on_sample(c);
-    window_checks::expect_window_holds(ig::gl::read_imagery_texels(window.id(), kSize, kSize), kSize, window.origin(), full_texels,
-                                       whole.width, 3);
+    window_checks::expect_window_holds(ig::gl::read_imagery_texels(window.id(), kSize, kSize), kSize, window.origin(),
+                                       real.full_texels, whole.width, 3);
   }
   EXPECT_GT(window.cache().stats().evictions, 0);
   EXPECT_EQ(window.failed_tiles(), 0);
-  std::filesystem::remove(path);
 }
 
 // Every channel's window set gets its own imagery window over the same
@@ -199,14 +223,9 @@ TEST(ImageryWindowTexture, PagedGdalImageryEqualsTheInMemoryWarp) {
 // each hold the in-memory warp's pixels around their own centre.
 TEST(ImageryWindowTexture, EachWindowSetHasItsOwnImageryWindow) {
   const auto context = ig::gl::create_headless_context();
-  const auto hf = imagery_test::dem(61, 49);
-  const double k = imagery_test::kRes;
-  const double gt[6] = {-118.0 - 0.5 * k - 0.01, k / 3, 0, 37.0 + 0.5 * k + 0.01, 0, -k / 3};
-  const auto path = imagery_test::write_image("ig_imagery_sets.tif", 4326, gt, 400, 400, /*tiled=*/true);
-  const auto whole = ig::terrain::load_imagery(hf, path, 16384);
-  const std::vector<std::uint8_t> full_texels = upload_and_read(whole.rgb, whole.width, whole.height);
+  const RealImagery real("ig_imagery_sets.tif");
   // Texture limit 50: heights and imagery beyond it, windows of 50.
-  ig::render::TerrainScene scene(hf, ig::render::ShadingParams{}, path, 50);
+  ig::render::TerrainScene scene(real.hf, ig::render::ShadingParams{}, real.path, 50);
   scene.set_wait_for_pages(true);  // moves read their tiles (no held moves to wait out)
   const int a = scene.claim_windows(), b = scene.claim_windows();
   ASSERT_NE(a, b);
@@ -220,10 +239,9 @@ TEST(ImageryWindowTexture, EachWindowSetHasItsOwnImageryWindow) {
   EXPECT_GT(std::abs(wa->origin().x - wb->origin().x), 60);
   for (const auto* w : {wa, wb})
     window_checks::expect_window_holds(ig::gl::read_imagery_texels(w->id(), w->size().x, w->size().y), w->size().x, w->origin(),
-                                       full_texels, whole.width, 3);
+                                       real.full_texels, real.whole.width, 3);
   EXPECT_EQ(wa->stats().moves, 1);
   scene.release_windows(b);
-  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "render/test/frame_dump.h"
+#include "render/test/target_pixels.h"
 #include "capture/png_writer.h"
 #include "gl/gl_context.h"
 #include "gl/render_target.h"
@@ -116,14 +117,10 @@ inline std::vector<View> per_frame_views(const ig::terrain::Heightfield& hf) {
           {"edge", camera_at(hf, 0.98 * ex, 0.5 * ey, 300.0, 80.0, -15.0)}};
 }
 
-struct Frame {
-  int w = 0, h = 0;
-  std::vector<float> depth;  // top row first; 0 = sky
-  std::vector<std::uint8_t> rgba;
+struct Frame : TargetPixels {
   ig::render::MethodFrameStats stats;
   double lod_ms = 0.0;
   double bound_px = 0.0;
-  bool terrain(int x, int y) const { return depth[size_t(y) * w + x] > 0.0f; }
 };
 
 // One context and 513 x 513 terrain for a whole test binary (one GL context per process).
@@ -141,10 +138,7 @@ inline Frame render(World& world, ig::render::TerrainMethod& method, const ig::r
   ig::render::FrameRenderer renderer(*scene, method, world.shader_dir);
   const auto r = ig::session::render_view(*scene, renderer, camera, *world.target);
   Frame f;
-  f.w = world.target->width();
-  f.h = world.target->height();
-  f.depth = world.target->read_depth();
-  f.rgba = world.target->read_rgba();
+  f.read(*world.target);
   f.stats = r.method;
   f.lod_ms = r.timings.lod_ms;
   f.bound_px = method.error_bound_px(scene->local_camera(camera), f.h).value_or(-1.0);
@@ -222,6 +216,17 @@ inline void expect_no_holes_within_bound(World& world, ig::render::TerrainMethod
   EXPECT_GT(h.reference_terrain, kW * kH / 10) << v.name << ": the view should show terrain";
   EXPECT_GT(f.stats.triangles, 0) << v.name;
   EXPECT_EQ(h.holes, 0) << v.name << ": sky through the surface";
+}
+
+// expect_no_holes_within_bound at every view of per_frame_views(w.hf), each
+// followed by `also(view)`: the method's own checks at that view.
+template <class Also>
+void expect_no_holes_at_per_frame_views(World& w, ig::render::TerrainMethod& method, size_t forced_column, Also also) {
+  ig::render::ReferenceMethod reference(*w.scene, w.shader_dir);
+  for (const auto& v : per_frame_views(w.hf)) {
+    ASSERT_NO_FATAL_FAILURE(expect_no_holes_within_bound(w, reference, method, v, forced_column));
+    also(v);
+  }
 }
 
 // The registry's knob sweep of `method_name` at the grazing and pitch30

@@ -34,18 +34,15 @@ bool levels_restricted(const ig::lod::QuadtreeTessellator& q, const ig::terrain:
 
 TEST(Quadtree, NoHolesAgainstTheReferenceAtManyViews) {
   auto& w = world();
-  ig::render::ReferenceMethod reference(*w.scene, w.shader_dir);
   QuadtreeMethod quadtree(*w.scene, w.shader_dir);
-  for (const auto& v : lod_views::per_frame_views(w.hf)) {
-    ASSERT_NO_FATAL_FAILURE(lod_views::expect_no_holes_within_bound(w, reference, quadtree, v, 2));
-
+  lod_views::expect_no_holes_at_per_frame_views(w, quadtree, 2, [&](const lod_views::View& v) {
     // This frame's quadtree (culled as drawn) keeps adjacent levels within
     // one; the same eye without culling gives a crack-free whole mesh.
     EXPECT_TRUE(levels_restricted(quadtree.tessellator(), w.hf)) << v.name;
     ig::lod::QuadtreeTessellator whole(w.hf);
     const auto sel = whole.select(v.camera.position, ig::render::QuadtreeOptions{}.c1, ig::render::QuadtreeOptions{}.c2);
     EXPECT_EQ(lod_checks::watertight(sel.vertices, w.hf.width, w.hf.height), "") << v.name;
-  }
+  });
 }
 
 TEST(Quadtree, C1SweepGivesMoreTrianglesAndASmallerBound) {

@@ -19,6 +19,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/test/frame_dump.h"
+#include "render/test/target_pixels.h"
 #include "capture/png_writer.h"
 #include "session/scenario_runner.h"
 #include "io/pose.h"
@@ -69,14 +70,10 @@ inline ig::render::TwoLevelMethod& twolevel(ScenarioRunner& r) {
   return *m;
 }
 
-struct Frame {
-  int w = 0, h = 0;
-  std::vector<float> depth;
-  std::vector<std::uint8_t> rgba;
+struct Frame : TargetPixels {
   ig::render::Camera camera;
   std::string passes;
   long long triangles = 0;
-  bool terrain(int x, int y) const { return depth[size_t(y) * w + x] > 0.0f; }
   float d(int x, int y) const { return depth[size_t(y) * w + x]; }
   std::uint8_t alpha(int x, int y) const { return rgba[(size_t(y) * w + x) * 4 + 3]; }
   double view_distance(int x, int y) const { return camera.depth_to_view_distance(d(x, y)); }
@@ -93,10 +90,7 @@ inline ig::stats::FrameImage image(const Frame& f) { return {f.w, f.h, f.rgba, f
 inline Frame grab(ScenarioRunner& r) {
   auto& ch = r.channels().front();
   Frame f;
-  f.w = ch.target->width();
-  f.h = ch.target->height();
-  f.depth = ch.target->read_depth();
-  f.rgba = ch.target->read_rgba();
+  f.read(*ch.target);
   f.camera = ch.camera;
   f.passes = ch.last.method.passes;
   f.triangles = ch.last.method.triangles;

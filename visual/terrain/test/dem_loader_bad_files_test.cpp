@@ -15,12 +15,8 @@ using namespace dem_test;
 
 TEST_F(DemLoaderTest, MissingEmptyAndFolders) {
   expect_dem_error(path("nope.tif"), "no such file");
-  const std::string empty = path("empty.tif");
-  write_bytes(empty, "");
-  expect_dem_error(empty, "empty file (0 bytes)");
-  const std::string empty_png = path("empty.png");
-  write_bytes(empty_png, "");
-  expect_dem_error(empty_png, "empty file (0 bytes)");
+  expect_dem_error(write_file("empty.tif", ""), "empty file (0 bytes)");
+  expect_dem_error(write_file("empty.png", ""), "empty file (0 bytes)");
   // A folder is read as a mosaic of its tiles (dem_mosaic_test.cpp): an
   // empty one has none, this one has an unreadable tile.
   fs::create_directories(path("adir.tif"));
@@ -43,17 +39,9 @@ TEST_F(DemLoaderTest, NotARaster) {
     x = x * 1664525u + 1013904223u;
     c = char(x >> 24);
   }
-  const std::string random_tif = path("random.tif");
-  write_bytes(random_tif, noise);
-  expect_dem_error(random_tif, "not a recognised raster format");
-
-  const std::string text_png = path("notes.png");
-  write_bytes(text_png, "this is a text file, not a PNG\n");
-  expect_dem_error(text_png, "not a recognised raster format");
-
-  const std::string text_dem = path("notes.dem");
-  write_bytes(text_dem, "hello\nworld\n");
-  expect_dem_error(text_dem, "not a recognised raster format");
+  expect_dem_error(write_file("random.tif", noise), "not a recognised raster format");
+  expect_dem_error(write_file("notes.png", "this is a text file, not a PNG\n"), "not a recognised raster format");
+  expect_dem_error(write_file("notes.dem", "hello\nworld\n"), "not a recognised raster format");
 }
 
 TEST_F(DemLoaderTest, TruncatedHgt) {
@@ -66,6 +54,19 @@ TEST_F(DemLoaderTest, TruncatedHgt) {
   expect_dem_error(file, "truncated or wrong-size SRTM .hgt: 5 bytes");
 }
 
+// The first half of the file `full` written as `file`: loading that throws a
+// DemError naming it (`format` names the kind of file in the failure).
+void expect_half_copy_refused(const std::string& full, const std::string& file, const std::string& format) {
+  const std::string bytes = read_bytes(full);
+  write_bytes(file, bytes.substr(0, bytes.size() / 2));
+  try {
+    (void)load_dem(file);
+    ADD_FAILURE() << "truncated " << format << " loaded";
+  } catch (const DemError& e) {
+    EXPECT_NE(std::string(e.what()).find(file + ": "), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(DemLoaderTest, TruncatedGeoTiff) {
   const int n = 256;
   for (const bool deflate : {false, true}) {
@@ -74,15 +75,7 @@ TEST_F(DemLoaderTest, TruncatedGeoTiff) {
     const std::string full = path("full.tif");
     write_raster(full, s, deflate ? std::vector<std::string>{"COMPRESS=DEFLATE"}
                                   : std::vector<std::string>{});
-    const std::string bytes = read_bytes(full);
-    const std::string file = path(deflate ? "cut_deflate.tif" : "cut.tif");
-    write_bytes(file, bytes.substr(0, bytes.size() / 2));
-    try {
-      (void)load_dem(file);
-      ADD_FAILURE() << "truncated GeoTIFF loaded";
-    } catch (const DemError& e) {
-      EXPECT_NE(std::string(e.what()).find(file + ": "), std::string::npos) << e.what();
-    }
+    expect_half_copy_refused(full, path(deflate ? "cut_deflate.tif" : "cut.tif"), "GeoTIFF");
   }
 }
 
@@ -92,15 +85,7 @@ TEST_F(DemLoaderTest, TruncatedPng) {
   for (std::size_t k = 0; k < px.size(); ++k) px[k] = std::uint16_t(k * 2654435761u >> 16);
   const std::string full = path("full.png");
   write_image(full, n, n, 1, OIIO::TypeDesc::UINT16, px);
-  const std::string bytes = read_bytes(full);
-  const std::string file = path("cut.png");
-  write_bytes(file, bytes.substr(0, bytes.size() / 2));
-  try {
-    (void)load_dem(file);
-    ADD_FAILURE() << "truncated PNG loaded";
-  } catch (const DemError& e) {
-    EXPECT_NE(std::string(e.what()).find(file + ": "), std::string::npos) << e.what();
-  }
+  expect_half_copy_refused(full, path("cut.png"), "PNG");
 }
 
 TEST_F(DemLoaderTest, AbsurdSizes) {

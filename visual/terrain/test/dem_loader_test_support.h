@@ -39,6 +39,16 @@ using ig::terrain::DemLoadOptions;
 using ig::terrain::Heightfield;
 using ig::terrain::load_dem;
 
+inline void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream f(path, std::ios::binary);
+  f.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+inline std::string read_bytes(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
 class DemLoaderTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -54,6 +64,12 @@ class DemLoaderTest : public ::testing::Test {
     fs::remove_all(dir_, ec);
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  // `bytes` written as the file `name` in the test's directory: its path.
+  std::string write_file(const std::string& name, const std::string& bytes) const {
+    const std::string p = path(name);
+    write_bytes(p, bytes);
+    return p;
+  }
 
   fs::path dir_;
 };
@@ -101,16 +117,6 @@ inline void write_raster(const std::string& path, const RasterSpec& s,
   ASSERT_EQ(GDALRasterIO(band, GF_Write, 0, 0, s.w, s.h, v.data(), s.w, s.h, GDT_Float64, 0, 0),
             CE_None);
   GDALClose(ds);
-}
-
-inline void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream f(path, std::ios::binary);
-  f.write(bytes.data(), std::streamsize(bytes.size()));
-}
-
-inline std::string read_bytes(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(f), {});
 }
 
 template <typename T>

@@ -23,6 +23,8 @@
 #include "terrain/height_pyramid.h"
 #include "terrain/heightfield_overview.h"
 #include "terrain/paged_heights.h"
+#include "terrain/test/paged_checks.h"
+#include "terrain/test/temp_dir_fixture.h"
 #include "terrain/test/test_geotiff.h"
 
 namespace ig::terrain {
@@ -50,10 +52,7 @@ std::vector<float> make_heights(int w, int h, const std::vector<Rect>& voids) {
 }
 
 std::string write_geotiff(const fs::path& path, int w, int h, const std::vector<float>& south_first) {
-  std::vector<float> file(south_first.size());  // file rows north first
-  for (int r = 0; r < h; ++r)
-    std::copy_n(south_first.begin() + std::ptrdiff_t(h - 1 - r) * w, w, file.begin() + std::ptrdiff_t(r) * w);
-  test::write_test_geotiff(path.string(), w, h, file, kNodata);
+  test::write_south_first_geotiff(path.string(), w, h, south_first, kNodata);
   return path.string();
 }
 
@@ -123,17 +122,9 @@ void expect_pyramid_bounds_served(const Heightfield& paged) {
   EXPECT_EQ(paged.max_m, *hi);
 }
 
-class PagedVoids : public ::testing::Test {
+class PagedVoids : public test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ig_paged_voids_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path dir_;
+  PagedVoids() : TempDirTest("ig_paged_voids_") {}
 };
 
 // Whole and paged loads of `path` with `fill`: the same samples, statistics,
@@ -152,15 +143,7 @@ void expect_paged_equals_whole(const std::string& path, const VoidFillOptions& f
   EXPECT_EQ(paged.min_m, whole.min_m);
   EXPECT_EQ(paged.max_m, whole.max_m);
   EXPECT_EQ(paged.mean_m, whole.mean_m);
-  EXPECT_EQ(paged.paged->overview->heights, decimate_heightfield(whole, paged.paged->overview_step).heights);
-  const HeightPyramid pw(whole), pp(paged);
-  ASSERT_EQ(pp.num_levels(), pw.num_levels());
-  for (int l = 2; l < pw.num_levels(); ++l)
-    for (int j = 0; j < pw.level_height(l); ++j)
-      for (int i = 0; i < pw.level_width(l); ++i) {
-        ASSERT_EQ(pp.node(l, i, j).lo, pw.node(l, i, j).lo) << l << ":" << i << "," << j;
-        ASSERT_EQ(pp.node(l, i, j).hi, pw.node(l, i, j).hi) << l << ":" << i << "," << j;
-      }
+  ASSERT_NO_FATAL_FAILURE(test::expect_same_overview_and_pyramid(whole, paged, 2));
   expect_pyramid_bounds_served(paged);
 }
 

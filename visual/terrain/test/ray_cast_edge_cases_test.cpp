@@ -134,10 +134,9 @@ TEST(RayCast, TraversalWorkIsBounded) {
 }
 
 TEST(RayCast, RaysFromOutsideTheFootprint) {
-  const Heightfield hf = random_hf(33, 33, 10.0, 10.0, 6);
-  const HeightPyramid pyr(hf);
-  Uniform01 u01(41);
-  Stats st;
+  CheckedRays rays(random_hf(33, 33, 10.0, 10.0, 6), 41, "outside");
+  const Heightfield& hf = rays.hf;
+  Uniform01& u01 = rays.u01;
   int hits = 0;
   for (int k = 0; k < 1500; ++k) {
     const double ex = hf.extent_x_m(), ey = hf.extent_y_m();
@@ -151,8 +150,7 @@ TEST(RayCast, RaysFromOutsideTheFootprint) {
     const double x = ex * u01(), y = ey * u01();
     const dvec3 target{x, y, hf.sample_surface(x, y)};
     const dvec3 d = target - o;
-    const auto h = cast_ray(hf, pyr, o, d);
-    check_ray(hf, brute_force(hf, o, d), h, o, d, st, "outside");
+    const auto h = rays.cast(o, d);
     // Aimed at a surface point: must hit no later than it (or it, from
     // outside the footprint when coming in below the edge it may hit the
     // underside first; either way, a hit).
@@ -162,27 +160,26 @@ TEST(RayCast, RaysFromOutsideTheFootprint) {
     }
   }
   EXPECT_GT(hits, 1400);  // misses only when the target is barely grazed
-  expect_clean(st, "outside");
+  rays.expect_clean();
 }
 
 TEST(RayCast, RaysFromBelowTheSurface) {
-  const Heightfield hf = random_hf(33, 33, 10.0, 10.0, 7);
-  const HeightPyramid pyr(hf);
-  Uniform01 u01(51);
-  Stats st;
+  CheckedRays rays(random_hf(33, 33, 10.0, 10.0, 7), 51, "below");
+  const Heightfield& hf = rays.hf;
+  Uniform01& u01 = rays.u01;
   for (int k = 0; k < 1500; ++k) {
     const double x = hf.extent_x_m() * u01(), y = hf.extent_y_m() * u01();
     const double surf = hf.sample_surface(x, y);
     const dvec3 o{x, y, surf - 1e-3 - 30 * u01()};
     const double z = 2 * u01() - 1, phi = 2 * M_PI * u01(), r = std::sqrt(1 - z * z);
     const dvec3 d{r * std::cos(phi), r * std::sin(phi), z};
-    check_ray(hf, brute_force(hf, o, d), cast_ray(hf, pyr, o, d), o, d, st, "below");
+    rays.cast(o, d);
     // Straight up from below: the surface directly above.
-    const auto up = cast_ray(hf, pyr, o, {0, 0, 1});
+    const auto up = cast_ray(hf, rays.pyr, o, {0, 0, 1});
     ASSERT_TRUE(up.has_value());
     EXPECT_NEAR(up->point.z, surf, 1e-9 * std::max(1.0, std::abs(surf)));
   }
-  expect_clean(st, "below");
+  rays.expect_clean();
 }
 
 TEST(RayCast, SkyRaysMiss) {

@@ -34,20 +34,17 @@ TEST(RayCast, RandomRaysThinStrips) {
 // Rays from 20-80 km away (a distant aircraft) aimed at surface points:
 // the slack and the ray-space transform must cope with large coordinates.
 TEST(RayCast, DistantOrigins) {
-  const Heightfield hf = random_hf(33, 33, 30.0, 30.0, 22);
-  const HeightPyramid pyr(hf);
-  Uniform01 u01(81);
-  Stats st;
+  CheckedRays rays(random_hf(33, 33, 30.0, 30.0, 22), 81, "distant");
+  const Heightfield& hf = rays.hf;
+  Uniform01& u01 = rays.u01;
   for (int k = 0; k < 1000; ++k) {
     const double dist = 20000 + 60000 * u01(), az = 2 * M_PI * u01();
     const dvec3 o{480 + dist * std::cos(az), 480 + dist * std::sin(az), hf.max_m + 3000 * u01() * u01()};
     const double x = hf.extent_x_m() * u01(), y = hf.extent_y_m() * u01();
     const dvec3 d = dvec3{x, y, hf.sample_surface(x, y)} - o;
-    const auto h = cast_ray(hf, pyr, o, d);
-    check_ray(hf, brute_force(hf, o, d), h, o, d, st, "distant");
-    EXPECT_TRUE(h.has_value());
+    EXPECT_TRUE(rays.cast(o, d).has_value());
   }
-  expect_clean(st, "distant");
+  rays.expect_clean();
 }
 
 TEST(RayCast, FlatTerrain) {

@@ -14,6 +14,7 @@
 #include <random>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -184,6 +185,29 @@ inline void expect_clean(const Stats& st, const char* what, int max_ambiguous = 
   EXPECT_EQ(st.mismatches, 0) << what;
   EXPECT_LE(st.ambiguous, max_ambiguous) << what;
 }
+
+// Rays cast over a DEM (cast_ray over its height pyramid), each checked
+// against the brute-force reference and tallied under `what`, and the random
+// source the test makes them from.
+struct CheckedRays {
+  CheckedRays(Heightfield dem, unsigned seed, const char* what)
+      : hf(std::move(dem)), pyr(hf), u01(seed), what(what) {}
+
+  // cast_ray from o along d, checked: what it hit.
+  std::optional<RayHit> cast(dvec3 o, dvec3 d) {
+    const auto h = cast_ray(hf, pyr, o, d);
+    check_ray(hf, brute_force(hf, o, d), h, o, d, st, what);
+    return h;
+  }
+  // No mismatch and no ambiguous touch among the rays cast.
+  void expect_clean() const { ray_cast_test::expect_clean(st, what); }
+
+  const Heightfield hf;
+  const HeightPyramid pyr;
+  Uniform01 u01;
+  Stats st;
+  const char* what;
+};
 
 // Random rays in and around the footprint at and below terrain heights,
 // plus rays aimed at random surface points (so roughly half hit).

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "terrain/dem_loader.h"
+#include "terrain/test/temp_dir_fixture.h"
 #include "terrain/test/test_geotiff.h"
 
 namespace ig::terrain {
@@ -32,26 +33,15 @@ struct Hole {
   bool contains(int i, int j) const { return (i - cx) * (i - cx) + (j - cy) * (j - cy) <= r * r; }
 };
 
-class VoidFill : public ::testing::Test {
+class VoidFill : public test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ig_void_fill_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
+  VoidFill() : TempDirTest("ig_void_fill_") {}
   // Writes the south-first grid as a GeoTIFF (north first) and returns its path.
   std::string write(const std::string& name, int w, int h, const std::vector<float>& south_first) const {
-    std::vector<float> north_first(south_first.size());
-    for (int r = 0; r < h; ++r)
-      std::copy_n(south_first.begin() + std::ptrdiff_t(h - 1 - r) * w, w, north_first.begin() + std::ptrdiff_t(r) * w);
     const std::string path = (dir_ / name).string();
-    test::write_test_geotiff(path, w, h, north_first, kNodata);
+    test::write_south_first_geotiff(path, w, h, south_first, kNodata);
     return path;
   }
-  fs::path dir_;
 };
 
 // The largest height step between 8-neighbours that are both in `in`.
