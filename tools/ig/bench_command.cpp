@@ -25,7 +25,6 @@
 #include "session/bench_report.h"
 #include "session/bench_samples.h"
 #include "cli_args.h"
-#include "command_options.h"
 #include "commands.h"
 #include "gl/shader_program.h"
 #include "render/frame_renderer.h"

@@ -106,4 +106,16 @@ double parse_double(const std::string& flag, const std::string& text);
 // (bin/scenarios), else scenarios/default.json in the working directory.
 std::string default_scenario_file();
 
+// The positional SCENARIO.json of ig run, bench and send; `description`
+// says what the command does with it.
+inline CLI::Option* add_scenario_argument(CLI::App& app, std::string& file, const std::string& description) {
+  return app.add_option("scenario", file, description)->option_text("SCENARIO.json");
+}
+
+// A count: a whole number from 1 (positive_int), its value shown as N in --help.
+template <class T>
+CLI::Option* add_count_option(CLI::App& app, const std::string& name, T& value, const std::string& description) {
+  return app.add_option(name, value, description)->check(positive_int())->option_text("N");
+}
+
 }  // namespace ig::app

@@ -12,7 +12,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
-#include "command_options.h"
 #include "commands.h"
 #include "io/recording.h"
 #include "session/capture_schedule.h"

@@ -16,7 +16,6 @@
 #include <thread>
 
 #include "cli_args.h"
-#include "command_options.h"
 #include "commands.h"
 #include "io/net/udp_socket.h"
 #ifdef IG_WITH_CAN
