@@ -1,5 +1,6 @@
 #include "session/host_environment.h"
 
+#include <algorithm>
 #include <string>
 #include <variant>
 
@@ -19,8 +20,11 @@ constexpr std::uint16_t kMessageIdBase = 1000;
 
 }  // namespace
 
-HostEnvironment::HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic)
-    : services_(services), to_geodetic_(std::move(to_geodetic)) {
+HostEnvironment::HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic, double visibility_m)
+    : services_(services),
+      to_geodetic_(std::move(to_geodetic)),
+      own_visibility_m_(visibility_m),
+      visibility_in_force_m_(visibility_m) {
   for (const char* name : {"celestial_sphere_controls", "atmosphere_controls", "weather_controls", "rate_controls",
                            "position_requests", "position_responses", "collision_segments", "collision_notifications",
                            "conditions_requests", "weather_responses", "ig_messages", "resets"})
@@ -50,7 +54,12 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
                         " cannot be loaded: this IG renders the terrain it was started with");
   if (!p.celestial.empty()) celestial_ = p.celestial.back();
   counters_.packets["celestial_sphere_controls"] += p.celestial.size();
-  if (!p.atmosphere.empty()) visibility_m_ = p.atmosphere.back().visibility_m;
+  if (!p.atmosphere.empty()) atmosphere_visibility_m_ = p.atmosphere.back().visibility_m;
+  for (const auto& w : p.weather) {
+    if (w.scope != 0) continue;  // regional and entity weather: counted only
+    if (w.enabled) layers_[w.layer] = w;
+    else layers_.erase(w.layer);
+  }
   counters_.packets["atmosphere_controls"] += p.atmosphere.size();
   counters_.packets["weather_controls"] += p.weather.size();
   for (const auto& r : p.rates) {
@@ -80,7 +89,7 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
   conditions_.insert(conditions_.end(), p.conditions.begin(), p.conditions.end());
 }
 
-HostEnvironment::Changes HostEnvironment::changes(const options::UtcDateTime& today) {
+HostEnvironment::Changes HostEnvironment::changes(const options::UtcDateTime& today, double eye_altitude_m) {
   Changes c;
   if (celestial_) {
     options::UtcDateTime t = today;
@@ -96,8 +105,14 @@ HostEnvironment::Changes HostEnvironment::changes(const options::UtcDateTime& to
     c.clock_runs = celestial_->ephemeris;
     celestial_.reset();
   }
-  c.visibility_m = visibility_m_;
-  visibility_m_.reset();
+  double v = atmosphere_visibility_m_.value_or(own_visibility_m_);
+  bool in_layer = false;
+  for (const auto& [id, w] : layers_) {
+    if (!(eye_altitude_m >= w.base_m && eye_altitude_m <= double(w.base_m) + w.thickness_m)) continue;
+    v = in_layer ? std::min(v, double(w.visibility_m)) : double(w.visibility_m);
+    in_layer = true;
+  }
+  if (v != visibility_in_force_m_) c.visibility_m = visibility_in_force_m_ = v;
   return c;
 }
 

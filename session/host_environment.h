@@ -27,8 +27,9 @@ namespace ig::session {
 class HostEnvironment {
  public:
   // services: the terrain the collision segments are tested against (the
-  // exact surface HAT/HOT and line-of-sight answer from).
-  HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic);
+  // exact surface HAT/HOT and line-of-sight answer from); visibility_m: the
+  // IG's own (the scenario's fog) until the host sets one.
+  HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic, double visibility_m);
 
   // Every datagram from the CIGI host.
   void take(std::span<const std::uint8_t> datagram);
@@ -39,10 +40,15 @@ class HostEnvironment {
     // runs from it (ephemeris enabled) or holds it.
     std::optional<options::UtcDateTime> time_utc;
     bool clock_runs = true;
-    std::optional<double> visibility_m;  // Atmosphere Control: global visibility
+    // The visibility in force at the eye, when it changed: the lowest of the
+    // global weather layers (Weather Control, scope global, enabled) whose
+    // altitude band holds the eye, else Atmosphere Control's global
+    // visibility, else the IG's own.
+    std::optional<double> visibility_m;
   };
-  // `today`: the date to use where the host's date is not valid.
-  Changes changes(const options::UtcDateTime& today);
+  // `today`: the date to use where the host's date is not valid;
+  // `eye_altitude_m`: the ownship's, in the terrain's heights.
+  Changes changes(const options::UtcDateTime& today, double eye_altitude_m);
 
   // The frame's packets for the host: Position Responses, Collision
   // Detection Segment Notifications, Weather Conditions Responses and IG
@@ -79,7 +85,10 @@ class HostEnvironment {
   HostServices& services_;
   LocalToGeodetic to_geodetic_;
   std::optional<io::wire::CigiCelestialSphere> celestial_;  // not yet applied
-  std::optional<double> visibility_m_;                      // not yet applied
+  std::optional<double> atmosphere_visibility_m_;
+  std::map<int, io::wire::CigiWeatherControl> layers_;      // global weather layers, by layer id
+  double own_visibility_m_;
+  double visibility_in_force_m_;
   std::optional<io::wire::CigiRateControl> ownship_rates_;
   std::vector<io::wire::CigiPositionRequest> one_shot_;
   std::map<std::pair<int, int>, io::wire::CigiPositionRequest> continuous_;  // (class, object)

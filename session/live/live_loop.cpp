@@ -42,8 +42,9 @@ std::string source_endpoint(const std::string& endpoint, const std::optional<std
 }
 
 // The host's time of day and visibility, from the frame about to render.
-void apply_host_environment(HostEnvironment& environment, ScenarioRunner& runner, double sim_time_s) {
-  const auto c = environment.changes(runner.clock_start().value_or(io::utc_now()));
+void apply_host_environment(HostEnvironment& environment, ScenarioRunner& runner, double sim_time_s,
+                            const io::Pose& pose) {
+  const auto c = environment.changes(runner.clock_start().value_or(io::utc_now()), pose.position.z);
   if (c.time_utc && !runner.set_time_of_day(*c.time_utc, sim_time_s, c.clock_runs))
     environment.message("Celestial Sphere Control: the terrain has no georeference to place the sun");
   if (c.visibility_m) runner.scene().set_fog_visibility(*c.visibility_m);
@@ -106,7 +107,9 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   // The rest of what a CIGI host sends: time of day, visibility, position
   // and collision requests, packets counted as not supported.
   std::unique_ptr<HostEnvironment> environment;
-  if (cigi_source) environment = std::make_unique<HostEnvironment>(*services, local_to_geodetic(runner.heightfield()));
+  if (cigi_source)
+    environment = std::make_unique<HostEnvironment>(*services, local_to_geodetic(runner.heightfield()),
+                                                    runner.scene().shading().fog_visibility_m);
   DrawnSurface drawn(runner);
   if (services && s.host_surface_drawn)
     services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
@@ -201,12 +204,12 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
         }
       }
     }
-    if (environment) apply_host_environment(*environment, runner, frame_start - start);
     const auto t0 = std::chrono::steady_clock::now();
     // Frozen: the last pose again; the sources are still drained and counted.
     const io::Pose pose = frozen && last_pose ? *last_pose : feed.pose_at(frame_start, initial, display_lead_s);
     last_pose = pose;
     const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (environment) apply_host_environment(*environment, runner, frame_start - start, pose);
     const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
     const double complete = io::net::steady_now_s();  // the renderer ends with glFinish
     feed.frame_complete(complete);
