@@ -31,7 +31,9 @@ HostEnvironment::HostEnvironment(HostServices& services, LocalToGeodetic to_geod
     counters_.packets[name] = 0;
 }
 
-void HostEnvironment::message(const std::string& text) { messages_.push_back(text); }
+void HostEnvironment::message(const std::string& text) {
+  if (announced_.insert(text).second) messages_.push_back(text);
+}
 
 void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
   CigiHostPackets p = decode_cigi_host_packets(datagram);
@@ -46,12 +48,11 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
   for (const QueryReject r : p.rejects) ++counters_.rejected[query_reject_name(r)];
   for (const std::uint8_t op : p.unsupported) {
     ++counters_.unsupported[op];
-    if (announced_.insert(op).second)
-      messages_.push_back("opcode " + std::to_string(op) + " is not supported by this IG: counted and ignored");
+    message("opcode " + std::to_string(op) + " is not supported by this IG: counted and ignored");
   }
-  if (p.database && refused_databases_.insert(*p.database).second)
-    messages_.push_back("database " + std::to_string(*p.database) +
-                        " cannot be loaded: this IG renders the terrain it was started with");
+  if (p.database)
+    message("database " + std::to_string(*p.database) +
+            " cannot be loaded: this IG renders the terrain it was started with");
   if (!p.celestial.empty()) celestial_ = p.celestial.back();
   counters_.packets["celestial_sphere_controls"] += p.celestial.size();
   if (!p.atmosphere.empty()) atmosphere_visibility_m_ = p.atmosphere.back().visibility_m;
@@ -62,10 +63,7 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
   }
   counters_.packets["atmosphere_controls"] += p.atmosphere.size();
   counters_.packets["weather_controls"] += p.weather.size();
-  for (const auto& r : p.rates) {
-    ++counters_.packets["rate_controls"];
-    if (r.entity == kCigiOwnshipEntity && !r.apply_to_part) ownship_rates_ = r;
-  }
+  counters_.packets["rate_controls"] += p.rates.size();  // applied by the pose intake (io/pose_intake.h)
   for (const auto& r : p.positions) {
     ++counters_.packets["position_requests"];
     const auto key = std::make_pair(int(r.of.object_class), int(r.of.object));
@@ -89,11 +87,14 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
   conditions_.insert(conditions_.end(), p.conditions.begin(), p.conditions.end());
 }
 
-HostEnvironment::Changes HostEnvironment::changes(const options::UtcDateTime& today, double eye_altitude_m) {
+HostEnvironment::Changes HostEnvironment::changes(double eye_altitude_m,
+                                                  const std::function<options::UtcDateTime()>& today) {
   Changes c;
   if (celestial_) {
-    options::UtcDateTime t = today;
-    if (celestial_->date_valid) {
+    options::UtcDateTime t;
+    if (!celestial_->date_valid) {
+      t = today();
+    } else {
       t.year = celestial_->year;
       t.month = celestial_->month;
       t.day = celestial_->day;
@@ -105,13 +106,11 @@ HostEnvironment::Changes HostEnvironment::changes(const options::UtcDateTime& to
     c.clock_runs = celestial_->ephemeris;
     celestial_.reset();
   }
-  double v = atmosphere_visibility_m_.value_or(own_visibility_m_);
-  bool in_layer = false;
-  for (const auto& [id, w] : layers_) {
-    if (!(eye_altitude_m >= w.base_m && eye_altitude_m <= double(w.base_m) + w.thickness_m)) continue;
-    v = in_layer ? std::min(v, double(w.visibility_m)) : double(w.visibility_m);
-    in_layer = true;
-  }
+  std::optional<double> layer;  // the lowest visibility of the layers holding the eye
+  for (const auto& [id, w] : layers_)
+    if (eye_altitude_m >= w.base_m && eye_altitude_m <= double(w.base_m) + w.thickness_m)
+      layer = std::min(layer.value_or(w.visibility_m), double(w.visibility_m));
+  const double v = layer.value_or(atmosphere_visibility_m_.value_or(own_visibility_m_));
   if (v != visibility_in_force_m_) c.visibility_m = visibility_in_force_m_ = v;
   return c;
 }
@@ -146,10 +145,8 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
     const auto p = position_of(r, ownship, views);
     if (!p) {
       ++counters_.rejected["position-of-unknown-object"];
-      const int key = 0x10000 + r.of.object_class;
-      if (announced_.insert(key).second)
-        messages_.push_back(std::string("Position Request: this IG knows entity 0 and the views only, not ") +
-                            object_class_name(r.of.object_class) + " " + std::to_string(r.of.object));
+      message(std::string("Position Request: this IG knows entity 0 and the views only, not ") +
+              object_class_name(r.of.object_class) + " " + std::to_string(r.of.object));
       return;
     }
     if (!fits(kCigiPositionResponseSize)) return;
@@ -187,8 +184,8 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
       append_cigi_weather_conditions(w, swap, out);
       ++counters_.packets["weather_responses"];
     }
-    if ((r.types & ~kCigiConditionsWeather) && announced_.insert(0x20000).second)
-      messages_.push_back("Environmental Conditions Request: only weather conditions are modelled here");
+    if (r.types & ~kCigiConditionsWeather)
+      message("Environmental Conditions Request: only weather conditions are modelled here");
   }
   conditions_.clear();
 

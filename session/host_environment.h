@@ -8,6 +8,7 @@
 // frame boundary and appends append_frame_packets() to the frame's datagram.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -46,9 +47,9 @@ class HostEnvironment {
     // visibility, else the IG's own.
     std::optional<double> visibility_m;
   };
-  // `today`: the date to use where the host's date is not valid;
-  // `eye_altitude_m`: the ownship's, in the terrain's heights.
-  Changes changes(const options::UtcDateTime& today, double eye_altitude_m);
+  // `eye_altitude_m`: the ownship's, in the terrain's heights; `today`: the
+  // date to use where the host's date is not valid (asked only then).
+  Changes changes(double eye_altitude_m, const std::function<options::UtcDateTime()>& today);
 
   // The frame's packets for the host: Position Responses, Collision
   // Detection Segment Notifications, Weather Conditions Responses and IG
@@ -57,8 +58,8 @@ class HostEnvironment {
   void append_frame_packets(const io::Pose& ownship, std::span<const io::Pose> views, double visibility_m,
                             std::vector<std::uint8_t>& out, std::size_t max_bytes);
 
-  // The IG's own notices to the host (a refused database load, ...): sent
-  // once each with the next frame.
+  // The IG's own notices to the host (a refused database load, an opcode
+  // not supported, ...): each text sent once, with the next frame.
   void message(const std::string& text);
 
   struct Counters {
@@ -74,8 +75,6 @@ class HostEnvironment {
   // Entering reset / standby from operate drops what the host had set up:
   // continuous Position Requests and collision segments.
   std::uint32_t ig_mode() const { return ig_mode_; }
-  // The newest Rate Control for the ownship (entity 0, not a part), if any.
-  const std::optional<io::wire::CigiRateControl>& ownship_rates() const { return ownship_rates_; }
   nlohmann::json summary() const;
 
  private:
@@ -89,14 +88,12 @@ class HostEnvironment {
   std::map<int, io::wire::CigiWeatherControl> layers_;      // global weather layers, by layer id
   double own_visibility_m_;
   double visibility_in_force_m_;
-  std::optional<io::wire::CigiRateControl> ownship_rates_;
   std::vector<io::wire::CigiPositionRequest> one_shot_;
   std::map<std::pair<int, int>, io::wire::CigiPositionRequest> continuous_;  // (class, object)
   std::map<int, io::wire::CigiCollisionSegment> segments_;                  // the ownship's, by id
   std::vector<io::wire::CigiEnvironmentRequest> conditions_;
   std::vector<std::string> messages_;  // to send
-  std::set<int> announced_;            // opcodes already answered with an IG Message
-  std::set<int> refused_databases_;
+  std::set<std::string> announced_;    // every text queued so far
   std::uint32_t ig_mode_ = io::wire::kCigiModeOperate;
   Counters counters_;
 };

@@ -44,7 +44,8 @@ std::string source_endpoint(const std::string& endpoint, const std::optional<std
 // The host's time of day and visibility, from the frame about to render.
 void apply_host_environment(HostEnvironment& environment, ScenarioRunner& runner, double sim_time_s,
                             const io::Pose& pose) {
-  const auto c = environment.changes(runner.clock_start().value_or(io::utc_now()), pose.position.z);
+  const auto c =
+      environment.changes(pose.position.z, [&runner] { return runner.clock_start().value_or(io::utc_now()); });
   if (c.time_utc && !runner.set_time_of_day(*c.time_utc, sim_time_s, c.clock_runs))
     environment.message("Celestial Sphere Control: the terrain has no georeference to place the sun");
   if (c.visibility_m) runner.scene().set_fog_visibility(*c.visibility_m);

@@ -42,19 +42,19 @@ struct Fixture : ig::session::test::RampHostServices {
 TEST(HostEnvironment, TimeOfDayAndVisibilityAreChangesForTheNextFrame) {
   Fixture f;
   const ig::options::UtcDateTime today{2026, 11, 26, 1, 2, 3.0};
-  EXPECT_FALSE(f.env.changes(today, 900.0).time_utc);
+  EXPECT_FALSE(f.env.changes(900.0, [&] { return today; }).time_utc);
   CigiCelestialSphere c;
   c.hour = 18;
   c.minute = 30;  // date not valid: today's date is kept
   CigiAtmosphere a;
   a.visibility_m = 5000.0f;
   f.send(kCigiModeOperate, encode_cigi_celestial(c, false), encode_cigi_atmosphere(a, false));
-  const auto ch = f.env.changes(today, 900.0);
+  const auto ch = f.env.changes(900.0, [&] { return today; });
   ASSERT_TRUE(ch.time_utc && ch.visibility_m);
   EXPECT_EQ(*ch.time_utc, (ig::options::UtcDateTime{2026, 11, 26, 18, 30, 0.0}));
   EXPECT_FALSE(ch.clock_runs);  // ephemeris off: the sun holds
   EXPECT_EQ(*ch.visibility_m, 5000.0);
-  EXPECT_FALSE(f.env.changes(today, 900.0).visibility_m);  // applied once
+  EXPECT_FALSE(f.env.changes(900.0, [&] { return today; }).visibility_m);  // applied once
 }
 
 TEST(HostEnvironment, AGlobalWeatherLayerSetsTheVisibilityInsideItsBand) {
@@ -71,15 +71,15 @@ TEST(HostEnvironment, AGlobalWeatherLayerSetsTheVisibilityInsideItsBand) {
   regional.layer = 3;
   regional.visibility_m = 10.0f;
   f.send(kCigiModeOperate, encode_cigi_weather(fog, false), encode_cigi_weather(regional, false));
-  EXPECT_FALSE(f.env.changes(today, 900.0).visibility_m);  // below the layer: the IG's own 60 km
-  EXPECT_EQ(f.env.changes(today, 1200.0).visibility_m, 800.0);  // inside it
-  EXPECT_FALSE(f.env.changes(today, 1300.0).visibility_m);     // still inside: no change
-  EXPECT_EQ(f.env.changes(today, 1600.0).visibility_m, 60000.0);  // above: back to the IG's own
+  EXPECT_FALSE(f.env.changes(900.0, [&] { return today; }).visibility_m);  // below the layer: the IG's own 60 km
+  EXPECT_EQ(f.env.changes(1200.0, [&] { return today; }).visibility_m, 800.0);  // inside it
+  EXPECT_FALSE(f.env.changes(1300.0, [&] { return today; }).visibility_m);     // still inside: no change
+  EXPECT_EQ(f.env.changes(1600.0, [&] { return today; }).visibility_m, 60000.0);  // above: back to the IG's own
   CigiAtmosphere a;
   a.visibility_m = 5000.0f;
   fog.enabled = false;  // the layer removed
   f.send(kCigiModeOperate, encode_cigi_atmosphere(a, false), encode_cigi_weather(fog, false));
-  EXPECT_EQ(f.env.changes(today, 1200.0).visibility_m, 5000.0);
+  EXPECT_EQ(f.env.changes(1200.0, [&] { return today; }).visibility_m, 5000.0);
 }
 
 TEST(HostEnvironment, PositionRequestsOneShotContinuousAndUnknown) {
