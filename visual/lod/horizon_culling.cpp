@@ -45,7 +45,7 @@ HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int b
     : floors_(std::move(floors)),
       spacing_(spacing_m),
       horizon_(size_t(std::max(bins, 4))),
-      wanted_(horizon_.size() + 1) {}
+      reach_(horizon_.size()) {}
 
 HorizonCulling::Extent HorizonCulling::extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi) {
   const double nx = std::max({lo.x - eye.x, 0.0, eye.x - hi.x}), ny = std::max({lo.y - eye.y, 0.0, eye.y - hi.y});
@@ -108,11 +108,12 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   const int bins = int(horizon_.size());
   const double scale = bins / 4.0;
 
-  // The boxes nearest first, and the directions any of them spans
-  // (wanted_[b + 1] - wanted_[a] counts the wanted bins in a..b).
+  // The boxes nearest first, and per direction the farthest a floor may
+  // end and still be swept before some box there (the nearest distance of
+  // the farthest box spanning that bin; -1: no box spans it).
   box_order_.clear();
   box_extent_.resize(boxes.size());
-  std::fill(wanted_.begin(), wanted_.end(), 0);
+  std::fill(reach_.begin(), reach_.end(), -1.0);
   double farthest_box = 0.0;
   for (size_t k = 0; k < boxes.size(); ++k) {
     const Extent& e = box_extent_[k] = extent_of(eye2, glm::dvec2(boxes[k].lo), glm::dvec2(boxes[k].hi));
@@ -120,7 +121,7 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
     box_order_.push_back({e.near, std::uint32_t(k)});
     farthest_box = std::max(farthest_box, e.near);
     each_bin((long)std::floor(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale), bins, [&](size_t b) {
-      wanted_[b + 1] = 1;
+      reach_[b] = std::max(reach_[b], e.near);
       return true;
     });
   }
@@ -129,13 +130,12 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   const double ring = std::max(farthest_box, 1.0) / kRings;
   auto ring_of = [&](double d) { return std::min(int(d / ring), kRings); };
   bucket_by_ring(box_order_, ring_of);
-  for (int b = 0; b < bins; ++b) wanted_[b + 1] += wanted_[b];
-  auto any_wanted = [&](long k0, long k1) {  // unwrapped bins k0..k1
-    if (k1 < k0) return false;
-    if (k1 - k0 + 1 >= bins) return wanted_[bins] > 0;
-    const long a = ((k0 % bins) + bins) % bins, b = a + (k1 - k0);
-    if (b < bins) return wanted_[b + 1] > wanted_[a];
-    return wanted_[bins] > wanted_[a] || wanted_[b - bins + 1] > 0;
+  // Whether a floor ending at distance `far` and raising the bins of
+  // [lo, hi) can change any box's test: some box spanning one of those bins
+  // lies beyond it (a floor is swept only before boxes beyond its far end).
+  auto matters = [&](const Extent& e, double far) {
+    return !each_bin((long)std::ceil(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale) - 1, bins,
+                     [&](size_t b) { return reach_[b] <= far; });
   };
 
   // Floors in order of their farthest point: a floor is used only for boxes
@@ -144,19 +144,31 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   cells_.clear();
   cell_extent_.resize(floors_.floor_m.size());
   const int s = floors_.cell_samples;
-  for (int j = 0; j < floors_.ny; ++j) {
-    const double y0 = j * s * spacing_.y, y1 = std::min((j + 1) * s, floors_.grid_cells_y) * spacing_.y;
-    const double ny = std::max({y0 - eye.y, 0.0, eye.y - y1});
-    if (ny > farthest_box) continue;
-    for (int i = 0; i < floors_.nx; ++i) {
-      const double x0 = i * s * spacing_.x, x1 = std::min((i + 1) * s, floors_.grid_cells_x) * spacing_.x;
-      const double nx = std::max({x0 - eye.x, 0.0, eye.x - x1});
-      if (nx * nx + ny * ny > farthest_box * farthest_box) continue;
-      const auto idx = std::uint32_t(j * floors_.nx + i);
-      const Extent& e = cell_extent_[idx] = extent_of(eye2, {x0, y0}, {x1, y1});
-      if (e.near < min_distance_m || e.far > farthest_box) continue;
-      if (!any_wanted((long)std::ceil(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale) - 1)) continue;
-      cells_.push_back({e.far, idx});
+  auto cell_x = [&](int i) { return std::min(i * s, floors_.grid_cells_x) * spacing_.x; };
+  auto cell_y = [&](int j) { return std::min(j * s, floors_.grid_cells_y) * spacing_.y; };
+  // Cells in groups of kGroup x kGroup: a group that cannot matter from its
+  // nearest point holds no cell that can (a cell's directions and distances
+  // lie inside its group's), so most of the grid costs one test per group.
+  constexpr int kGroup = 4;
+  for (int gj = 0; gj < floors_.ny; gj += kGroup) {
+    const int gj1 = std::min(gj + kGroup, floors_.ny);
+    const double gy0 = cell_y(gj), gy1 = cell_y(gj1);
+    if (std::max({gy0 - eye.y, 0.0, eye.y - gy1}) > farthest_box) continue;
+    for (int gi = 0; gi < floors_.nx; gi += kGroup) {
+      const int gi1 = std::min(gi + kGroup, floors_.nx);
+      const Extent g = extent_of(eye2, {cell_x(gi), gy0}, {cell_x(gi1), gy1});
+      if (g.near > farthest_box) continue;
+      if (g.near > 0.0 && !matters(g, g.near)) continue;
+      for (int j = gj; j < gj1; ++j) {
+        const double y0 = cell_y(j), y1 = cell_y(j + 1);
+        for (int i = gi; i < gi1; ++i) {
+          const auto idx = std::uint32_t(j * floors_.nx + i);
+          const Extent& e = cell_extent_[idx] = extent_of(eye2, {cell_x(i), y0}, {cell_x(i + 1), y1});
+          if (e.near < min_distance_m || e.far > farthest_box) continue;
+          if (!matters(e, e.far)) continue;
+          cells_.push_back({e.far, idx});
+        }
+      }
     }
   }
   bucket_by_ring(cells_, ring_of);

@@ -58,7 +58,7 @@ class HorizonCulling {
   TerrainFloors floors_;
   glm::dvec2 spacing_;
   std::vector<double> horizon_;  // per bin: a line under this slope passes under some floor swept
-  std::vector<int> wanted_;      // prefix counts of the bins some box spans
+  std::vector<double> reach_;    // per bin: the nearest distance of the farthest box spanning it
   struct Order {
     double distance;
     std::uint32_t index;

@@ -63,6 +63,17 @@ Level0Clusters::Level0Clusters(const Level0Mesh& mesh, glm::dvec2 spacing_m, int
     }
     clusters_.push_back(c);
   }
+  for (std::uint32_t k0 = 0; k0 < clusters_.size(); k0 += kClustersPerGroup) {
+    Group g{k0, std::min<std::uint32_t>(kClustersPerGroup, std::uint32_t(clusters_.size()) - k0), glm::ivec2(1 << 30),
+            glm::ivec2(-(1 << 30)), 1e30f, -1e30f};
+    for (std::uint32_t k = k0; k < k0 + g.clusters; ++k) {
+      g.lo = glm::min(g.lo, clusters_[k].lo);
+      g.hi = glm::max(g.hi, clusters_[k].hi);
+      g.z_lo = std::min(g.z_lo, clusters_[k].z_lo);
+      g.z_hi = std::max(g.z_hi, clusters_[k].z_hi);
+    }
+    groups_.push_back(g);
+  }
 }
 
 int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const BoxVisible& visible, IndexRuns& outside,
@@ -78,17 +89,29 @@ int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const Box
   int culled = 0;
   in_view_.clear();
   boxes_.clear();
-  for (std::uint32_t k = 0; k < clusters_.size(); ++k) {
-    const Cluster& c = clusters_[k];
-    if (inside_square(c.lo, c.hi)) continue;
-    const glm::dvec3 lo(c.lo.x * spacing_.x, c.lo.y * spacing_.y, c.z_lo);
-    const glm::dvec3 hi(c.hi.x * spacing_.x, c.hi.y * spacing_.y, c.z_hi);
-    if (!visible(lo, hi)) {
-      ++culled;
-      continue;
+  auto box_of = [&](const auto& c) {
+    return HorizonCulling::Box{glm::dvec3(c.lo.x * spacing_.x, c.lo.y * spacing_.y, c.z_lo),
+                               glm::dvec3(c.hi.x * spacing_.x, c.hi.y * spacing_.y, c.z_hi)};
+  };
+  // A group out of view has every cluster out of view (their boxes lie in
+  // its box): one test for most of a whole-DEM mesh at a narrow field of view.
+  for (const Group& g : groups_) {
+    if (inside_square(g.lo, g.hi)) continue;
+    const bool group_visible = [&] {
+      const HorizonCulling::Box b = box_of(g);
+      return visible(b.lo, b.hi);
+    }();
+    for (std::uint32_t k = g.first_cluster; k < g.first_cluster + g.clusters; ++k) {
+      const Cluster& c = clusters_[k];
+      if (inside_square(c.lo, c.hi)) continue;
+      const HorizonCulling::Box b = box_of(c);
+      if (!group_visible || !visible(b.lo, b.hi)) {
+        ++culled;
+        continue;
+      }
+      in_view_.push_back(k);
+      boxes_.push_back(b);
     }
-    in_view_.push_back(k);
-    boxes_.push_back({lo, hi});
   }
   hidden_.assign(in_view_.size(), 0);
   if (mark_hidden) mark_hidden(boxes_, hidden_);

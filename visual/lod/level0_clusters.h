@@ -57,9 +57,17 @@ class Level0Clusters {
     glm::ivec2 lo, hi;  // samples
     float z_lo, z_hi;
   };
+  // Consecutive clusters (neighbours in Z order) under one box.
+  struct Group {
+    std::uint32_t first_cluster, clusters;
+    glm::ivec2 lo, hi;
+    float z_lo, z_hi;
+  };
+  static constexpr std::uint32_t kClustersPerGroup = 16;
   const Level0Mesh& mesh_;
   glm::dvec2 spacing_;
   std::vector<Cluster> clusters_;
+  std::vector<Group> groups_;
   // Per-frame scratch: clusters in view and their boxes.
   mutable std::vector<std::uint32_t> in_view_;
   mutable std::vector<HorizonCulling::Box> boxes_;
