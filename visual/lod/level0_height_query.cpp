@@ -10,7 +10,7 @@ namespace {
 int bucket_side(const Level0Mesh& mesh, int asked) {
   if (asked > 0) return asked;
   const double triangles = double(mesh.indices.size() / 3);
-  return std::clamp(int(std::sqrt(triangles / 4.0)), 64, 2048);
+  return std::clamp(int(std::sqrt(triangles)), 64, 2048);
 }
 }  // namespace
 
@@ -43,30 +43,45 @@ Level0HeightQuery::Level0HeightQuery(const Level0Mesh& mesh, int w, int h, int b
     each_bucket(t, [&](size_t k) { bucket_tris_[size_t(next[k]++)] = int(t / 3); });
 }
 
-double Level0HeightQuery::height_at(double i, double j) const {
+Level0HeightQuery::OnTriangle Level0HeightQuery::evaluate(int t, double i, double j) const {
+  glm::dvec2 p[3];
+  double z[3];
+  for (int k = 0; k < 3; ++k) {
+    const auto v = mesh_.indices[size_t(t) * 3 + k];
+    p[k] = glm::dvec2(mesh_.samples[v]);
+    z[k] = mesh_.positions[v].z;
+  }
+  const double det = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+  if (det == 0.0) return {};
+  const double l1 = ((i - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (j - p[0].y)) / det;
+  const double l2 = ((p[1].x - p[0].x) * (j - p[0].y) - (i - p[0].x) * (p[1].y - p[0].y)) / det;
+  const double l0 = 1.0 - l1 - l2;
+  return {true, std::max({-l0, -l1, -l2, 0.0}), std::min({l0, l1, l2}), l0 * z[0] + l1 * z[1] + l2 * z[2]};
+}
+
+double Level0HeightQuery::height_at(double i, double j, int* hint) const {
+  // Clearly inside the hinted triangle (not on an edge within rounding), no
+  // other triangle holds the point (the mesh's triangles do not overlap):
+  // the scan would find this one, and the same height.
+  if (hint && *hint >= 0) {
+    const OnTriangle h = evaluate(*hint, i, j);
+    if (h.valid && h.inside > 1e-9) return h.height;
+  }
   const int b = std::clamp(int(i / cell_x_), 0, buckets_ - 1), c = std::clamp(int(j / cell_y_), 0, buckets_ - 1);
   double best = std::numeric_limits<double>::quiet_NaN(), best_outside = 1e30;
   const size_t k = size_t(c) * buckets_ + b;
   for (int q = bucket_start_[k]; q < bucket_start_[k + 1]; ++q) {
     const int t = bucket_tris_[size_t(q)];
-    glm::dvec2 p[3];
-    double z[3];
-    for (int k = 0; k < 3; ++k) {
-      const auto v = mesh_.indices[size_t(t) * 3 + k];
-      p[k] = glm::dvec2(mesh_.samples[v]);
-      z[k] = mesh_.positions[v].z;
+    const OnTriangle h = evaluate(t, i, j);
+    if (!h.valid) continue;
+    if (h.outside < best_outside) {  // inside (0) wins; else the least-outside triangle
+      best_outside = h.outside;
+      best = h.height;
     }
-    const double det = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
-    if (det == 0.0) continue;
-    const double l1 = ((i - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (j - p[0].y)) / det;
-    const double l2 = ((p[1].x - p[0].x) * (j - p[0].y) - (i - p[0].x) * (p[1].y - p[0].y)) / det;
-    const double l0 = 1.0 - l1 - l2;
-    const double outside = std::max({-l0, -l1, -l2, 0.0});
-    if (outside < best_outside) {  // inside (0) wins; else the least-outside triangle
-      best_outside = outside;
-      best = l0 * z[0] + l1 * z[1] + l2 * z[2];
+    if (h.outside == 0.0) {
+      if (hint) *hint = t;
+      break;
     }
-    if (outside == 0.0) break;
   }
   return best;
 }

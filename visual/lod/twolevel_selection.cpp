@@ -214,10 +214,11 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
     }
     constexpr float kBelow = 1.0f;
     sel_.wall_z.resize(perimeter_.size() * 2);
+    int hint = -1;  // the perimeter walks from sample to neighbouring sample
     for (size_t k = 0; k < perimeter_.size(); ++k) {
       const glm::ivec2 s = origin + perimeter_[k];
       const float h1 = hf.at_clamped(s.x, s.y);
-      const double q = level0_heights_.height_at(s.x, s.y);
+      const double q = level0_heights_.height_at(s.x, s.y, &hint);
       const float h0 = std::isfinite(q) ? float(q) : h1;
       sel_.wall_z[2 * k] = {1.0f, std::max(h0, h1)};
       sel_.wall_z[2 * k + 1] = {1.0f, std::min(h0, h1) - kBelow};
