@@ -6,6 +6,7 @@
 
 #include "capture/png_writer.h"
 #include "session/frametime_plot.h"
+#include "session/process_memory.h"
 #include "terrain/paged_heights.h"
 
 namespace ig::session {
@@ -131,6 +132,7 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
       {"sun_elevation_deg", runner.sun().elevation_deg},
       {"sun_azimuth_deg", runner.sun().azimuth_deg},
       {"visibility_m", runner.scene().shading().fog_visibility_m},  // 0: no fog
+      {"process_memory", process_memory()},
   };
   if (hf.paged) {  // paged heights
     const auto st = hf.paged->cache->stats();

@@ -279,6 +279,13 @@ def report(args):
         p("")
         p("Frames outside the terrain %s, below it %s; Modbus (summary.json): %s." % (
             summary.get("frames_outside_terrain"), summary.get("frames_below_terrain"), json.dumps(summary.get("modbus"))))
+        pm = summary.get("process_memory")
+        if pm:
+            p("")
+            p("At the end (summary.json process_memory): resident %.1f MB (peak %.1f MB); the C library's heap %.1f MB "
+              "in use, %.1f MB free and kept for reuse, %.1f MB of it mapped blocks." % (
+                  pm.get("rss_mb", 0), pm.get("peak_rss_mb", 0), pm.get("heap_in_use_mb", 0),
+                  pm.get("heap_free_mb", 0), pm.get("heap_mmapped_mb", 0)))
         p("")
     mb = mbpoll_stats(os.path.join(d, "mbpoll.log"))
     if mb:
