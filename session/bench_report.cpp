@@ -234,7 +234,8 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
     << "). Each method's median frame time at that error: a point at the target gives its own time, else "
        "linear interpolation between neighbouring points of its sweep (docs/bench.md); ratio = method ms / "
        "twolevel ms (how many times faster the two-level method is at equal horizon error).\n\n";
-  table_header(o, {"method", "frame ms at target", "how", "ratio vs twolevel", "CPU ms at target", "CPU ratio"});
+  table_header(o, {"method", "frame ms at target", "how", "ratio vs twolevel", "CPU ms at target", "CPU ratio",
+                   "temporal error at target"});
   auto ratio_text = [](const MatchedRow& m) {
     if (!m.ratio) return std::string("n/a (no twolevel time at the target)");
     const std::string v = fmt("%.2f", *m.ratio);
@@ -242,9 +243,16 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
   };
   const auto wall = match_horizon_error(rows, *target_px);
   const auto cpu = match_horizon_error(rows, *target_px, &BenchRow::cpu_ms_median);
+  // Popping at equal accuracy: the temporal error interpolated the same way;
+  // beyond a method's sweep it is not known.
+  const auto temporal = match_horizon_error(rows, *target_px, &BenchRow::temporal_error_mean);
+  auto temporal_text = [](const MatchedRow& m) {
+    return m.kind == MatchKind::Measured || m.kind == MatchKind::Interpolated ? fmt("%.3f", m.frame_ms)
+                                                                              : std::string("n/a (outside its sweep)");
+  };
   for (size_t k = 0; k < wall.size(); ++k)
     table_row(o, {wall[k].method, matched_ms_text(wall[k]), how_text(wall[k].kind), ratio_text(wall[k]),
-                  matched_ms_text(cpu[k]), ratio_text(cpu[k])});
+                  matched_ms_text(cpu[k]), ratio_text(cpu[k]), temporal_text(temporal[k])});
 
   // The same comparison at every two-level setting of a sweep, on CPU time.
   std::vector<const BenchRow*> settings;

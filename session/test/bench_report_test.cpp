@@ -2,6 +2,9 @@
 // hand-made rows with known answers. No GL.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "session/bench_report.h"
@@ -84,5 +87,29 @@ TEST(BenchReport, MatchedErrorOnCpuTimeUsesTheCpuColumn) {
   EXPECT_DOUBLE_EQ(*find(wall, "other").ratio, 1.5);
   EXPECT_DOUBLE_EQ(find(cpu, "other").frame_ms, 50.0);
   EXPECT_DOUBLE_EQ(*find(cpu, "other").ratio, 50.0 / 30.0);
+}
+
+TEST(BenchReport, TemporalErrorAtTheTargetInTheMarkdown) {
+  // other: temporal error 0.9 at 3 px, 0.1 at 1 px -> 0.5 at 2 px; coarse never reaches 2 px.
+  std::vector<BenchRow> rows = {row("twolevel", 1, 2.0, 20.0), row("other", 1, 3.0, 10.0), row("other", 2, 1.0, 50.0),
+                                row("coarse", 1, 8.0, 5.0)};
+  rows[0].temporal_error_mean = 0.25;
+  rows[1].temporal_error_mean = 0.9;
+  rows[2].temporal_error_mean = 0.1;
+  rows[3].temporal_error_mean = 3.0;
+  const std::string path = ::testing::TempDir() + "bench_report_temporal.md";
+  ig::session::BenchContext context;
+  ig::session::write_bench_markdown(path, context, rows, 2.0, "test");
+  std::ifstream in(path);
+  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("temporal error at target"), std::string::npos);
+  auto line_of = [&](const std::string& start) {
+    const auto at = md.find("\n## Matched horizon error\n");
+    const auto p = md.find("\n| " + start + " |", at);
+    return p == std::string::npos ? std::string() : md.substr(p + 1, md.find('\n', p + 1) - p - 1);
+  };
+  EXPECT_NE(line_of("twolevel").find("| 0.250 |"), std::string::npos) << line_of("twolevel");
+  EXPECT_NE(line_of("other").find("| 0.500 |"), std::string::npos) << line_of("other");
+  EXPECT_NE(line_of("coarse").find("n/a (outside its sweep)"), std::string::npos) << line_of("coarse");
 }
 }  // namespace
