@@ -6,10 +6,11 @@ set(IG_FIRST_SCN ${CMAKE_SOURCE_DIR}/tests/cli/scenarios)
 # summary.json's value at a dotted key path, for the tests' bash lines.
 set(IG_JSON_GET "python3 -c \"import functools,json,sys; print(functools.reduce(lambda v, k: v[k], sys.argv[2].split('.'), json.load(open(sys.argv[1]))))\"")
 
-# Runs `ig run` on tests/cli/scenarios/<name>.json into OUT/<name> (stderr in
-# OUT/<name>.err) and then the bash `checks`; passes on "<name> ok".
+# Runs `ig run` on tests/cli/scenarios/<name>.json into OUT/<test> (stderr in
+# OUT/<test>.err; one folder per test, as tests sharing a scenario may run at
+# once) and then the bash `checks`; passes on "<name> ok".
 function(ig_first_use_run_test test name args checks)
-  add_test(NAME ${test} COMMAND bash -c "set -e; o='${IG_FIRST_OUT}/${name}'; mkdir -p '${IG_FIRST_OUT}'; rm -rf \"$o\" \"$o.err\"
+  add_test(NAME ${test} COMMAND bash -c "set -e; o='${IG_FIRST_OUT}/${test}'; mkdir -p '${IG_FIRST_OUT}'; rm -rf \"$o\" \"$o.err\"
     '$<TARGET_FILE:ig>' run '${IG_FIRST_SCN}/${name}.json' --out \"$o\" --quiet ${args} 2> \"$o.err\" || { cat \"$o.err\"; exit 1; }
     cat \"$o.err\"; get() { ${IG_JSON_GET} \"$o/summary.json\" \"$1\"; }
     ${checks}
