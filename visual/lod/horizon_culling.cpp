@@ -47,35 +47,45 @@ HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int b
       horizon_(size_t(std::max(bins, 4))),
       reach_(horizon_.size()) {}
 
-HorizonCulling::Extent HorizonCulling::extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi) {
+HorizonCulling::Extent HorizonCulling::extent_of(const glm::dvec2& eye, const glm::dvec2& lo,
+                                                 const glm::dvec2& hi) const {
   const double nx = std::max({lo.x - eye.x, 0.0, eye.x - hi.x}), ny = std::max({lo.y - eye.y, 0.0, eye.y - hi.y});
   const double fx = std::max(std::abs(lo.x - eye.x), std::abs(hi.x - eye.x));
   const double fy = std::max(std::abs(lo.y - eye.y), std::abs(hi.y - eye.y));
-  Extent e{0.0, 4.0, std::sqrt(nx * nx + ny * ny), std::sqrt(fx * fx + fy * fy)};
-  if (e.near <= 0.0) return e;  // the eye is over it: every direction
-  // The eye is outside the rectangle, which therefore spans less than half a
-  // turn: the corners' directions relative to the first one bound it.
-  const double a0 = pseudo_angle(lo.x - eye.x, lo.y - eye.y);
-  double dlo = 0.0, dhi = 0.0;
-  for (int k = 1; k < 4; ++k) {
-    const glm::dvec2 c(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y);
-    double d = pseudo_angle(c.x - eye.x, c.y - eye.y) - a0;
-    if (d > 2.0) d -= 4.0;
-    if (d < -2.0) d += 4.0;
-    dlo = std::min(dlo, d);
-    dhi = std::max(dhi, d);
+  const double near = std::sqrt(nx * nx + ny * ny), far = std::sqrt(fx * fx + fy * fy);
+  double angle_lo = 0.0, angle_hi = 4.0;  // the eye is over it: every direction
+  if (near > 0.0) {
+    // The eye is outside the rectangle, which therefore spans less than half
+    // a turn: the corners' directions relative to the first one bound it.
+    const double a0 = pseudo_angle(lo.x - eye.x, lo.y - eye.y);
+    double dlo = 0.0, dhi = 0.0;
+    for (int k = 1; k < 4; ++k) {
+      const glm::dvec2 c(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y);
+      double d = pseudo_angle(c.x - eye.x, c.y - eye.y) - a0;
+      if (d > 2.0) d -= 4.0;
+      if (d < -2.0) d += 4.0;
+      dlo = std::min(dlo, d);
+      dhi = std::max(dhi, d);
+    }
+    angle_lo = a0 + dlo;
+    angle_hi = a0 + dhi;
   }
-  e.angle_lo = a0 + dlo;
-  e.angle_hi = a0 + dhi;
-  return e;
+  const double scale = double(horizon_.size()) / 4.0;
+  const double lo_bins = angle_lo * scale, hi_bins = angle_hi * scale;
+  return {near, far, long(std::floor(lo_bins)), long(std::floor(hi_bins)), long(std::ceil(lo_bins)),
+          long(std::floor(hi_bins)) - 1};
 }
 
 namespace {
-// Calls f(bin) for bins k0..k1 (unwrapped indices, k0 <= k1 + 1) modulo `bins`.
+// Calls f(bin) for bins k0..k1 (unwrapped indices, k0 <= k1 + 1) modulo
+// `bins` while f returns true; returns false where f stopped it. Unwrapped
+// indices stay within a turn or two of [0, bins): no division needed.
 template <class F>
 bool each_bin(long k0, long k1, int bins, F f) {
   if (k1 - k0 + 1 >= bins) k1 = k0 + bins - 1;
-  long b = ((k0 % bins) + bins) % bins;
+  long b = k0;
+  while (b < 0) b += bins;
+  while (b >= bins) b -= bins;
   for (long k = k0; k <= k1; ++k) {
     if (!f(size_t(b))) return false;
     if (++b == bins) b = 0;
@@ -85,19 +95,14 @@ bool each_bin(long k0, long k1, int bins, F f) {
 }  // namespace
 
 void HorizonCulling::raise(const Extent& e, double slope) {
-  const int bins = int(horizon_.size());
-  const double scale = bins / 4.0;
-  each_bin((long)std::ceil(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale) - 1, bins, [&](size_t b) {
+  each_bin(e.inside_lo, e.inside_hi, int(horizon_.size()), [&](size_t b) {
     horizon_[b] = std::max(horizon_[b], slope);
     return true;
   });
 }
 
 bool HorizonCulling::under(const Extent& e, double slope) const {
-  const int bins = int(horizon_.size());
-  const double scale = bins / 4.0;
-  return each_bin((long)std::floor(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale), bins,
-                  [&](size_t b) { return slope < horizon_[b]; });
+  return each_bin(e.touch_lo, e.touch_hi, int(horizon_.size()), [&](size_t b) { return slope < horizon_[b]; });
 }
 
 int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
@@ -106,7 +111,6 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   if (floors_.floor_m.empty() || boxes.empty()) return 0;
   const glm::dvec2 eye2(eye.x, eye.y);
   const int bins = int(horizon_.size());
-  const double scale = bins / 4.0;
 
   // The boxes nearest first, and per direction the farthest a floor may
   // end and still be swept before some box there (the nearest distance of
@@ -120,7 +124,7 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
     if (e.near < min_distance_m) continue;
     box_order_.push_back({e.near, std::uint32_t(k)});
     farthest_box = std::max(farthest_box, e.near);
-    each_bin((long)std::floor(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale), bins, [&](size_t b) {
+    each_bin(e.touch_lo, e.touch_hi, bins, [&](size_t b) {
       reach_[b] = std::max(reach_[b], e.near);
       return true;
     });
@@ -134,8 +138,7 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   // [lo, hi) can change any box's test: some box spanning one of those bins
   // lies beyond it (a floor is swept only before boxes beyond its far end).
   auto matters = [&](const Extent& e, double far) {
-    return !each_bin((long)std::ceil(e.angle_lo * scale), (long)std::floor(e.angle_hi * scale) - 1, bins,
-                     [&](size_t b) { return reach_[b] <= far; });
+    return !each_bin(e.inside_lo, e.inside_hi, bins, [&](size_t b) { return reach_[b] <= far; });
   };
 
   // Floors in order of their farthest point: a floor is used only for boxes

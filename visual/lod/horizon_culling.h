@@ -46,12 +46,14 @@ class HorizonCulling {
   TerrainFloors& floors() { return floors_; }
 
  private:
-  // A rectangle's directions seen from the eye, in pseudo-angle units [0, 4)
-  // (lo may be below 0 or hi above 4: the span wraps), and its horizontal distances.
+  // A rectangle's horizontal distances from the eye and its directions as
+  // bins, unwrapped (they may start below 0 or end past the last bin: the
+  // span wraps): the bins its directions touch, and those wholly inside them.
   struct Extent {
-    double angle_lo, angle_hi, near, far;
+    double near, far;
+    long touch_lo, touch_hi, inside_lo, inside_hi;
   };
-  static Extent extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi);
+  Extent extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi) const;
   void raise(const Extent& e, double slope);           // bins wholly inside e's directions
   bool under(const Extent& e, double slope) const;     // every bin e's directions touch
 
