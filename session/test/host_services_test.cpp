@@ -249,3 +249,40 @@ TEST(HostServices, MalformedRequestsCountedByReason) {
 }
 
 }  // namespace
+
+namespace {
+
+// A frame big enough to be split between two threads gives the same answers
+// in the same order, and the same counts, as one thread.
+TEST(HostServices, TwoThreadsAnswerAsOneDoes) {
+  auto run = [](int threads) {
+    HostServicesOptions o;
+    o.answer_threads = threads;
+    Fixture f(o);
+    const ig::io::Pose own = level_pose({500, 600, 900}, 30);
+    for (int k = 0; k < 300; ++k) {
+      HatHotRequest r;
+      r.id = std::uint16_t(k);
+      r.type = k % 3 == 0 ? HatHotType::Extended : HatHotType::Hot;
+      r.point = f.geodetic(100 + 7 * k % 800, 50 + 13 * k % 900, 400);
+      LosVectorRequest v;
+      v.id = std::uint16_t(k);
+      v.extended = k % 2 == 0;
+      v.source = f.geodetic(200 + 3 * k % 600, 300, 700);
+      v.azimuth_deg = float(k % 360);
+      v.elevation_deg = -10.0f - float(k % 40);
+      v.max_range_m = 4000.0f;
+      f.services.take(datagram(1, false, encode_cigi_hat_hot_request(r, false), encode_cigi_los_vector_request(v, false)));
+    }
+    auto d = f.services.frame_datagram(encode_cigi_start_of_frame(1, 1, 0, kCigiModeOperate, false), own);
+    return std::make_tuple(d, f.services.counters().answered, f.services.counters().invalid);
+  };
+  const auto [one, answered_one, invalid_one] = run(1);
+  const auto [two, answered_two, invalid_two] = run(2);
+  EXPECT_EQ(answered_one, 401u);  // in arrival order up to the 201st line (the LOS budget is 200)
+  EXPECT_EQ(answered_two, answered_one);
+  EXPECT_EQ(invalid_two, invalid_one);
+  EXPECT_EQ(two, one);  // byte for byte
+}
+
+}  // namespace
