@@ -24,6 +24,7 @@
 #include "io/wire/cigi.h"
 #include "session/capture_schedule.h"
 #include "session/drawn_surface.h"
+#include "session/heap_trim.h"
 #include "session/host_environment.h"
 #include "session/host_services.h"
 #include "session/pose_feed.h"
@@ -131,6 +132,9 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   // first frame at or after each.
   CaptureSchedule captures(runner.scenario(), 0.0);
   double display_lead_s = 0.0;  // frame start -> frame complete, smoothed (the latest mode's lead)
+  // Freed per-frame memory back to the system every 10 s (session/heap_trim.h):
+  // resident memory follows the frames in flight, not the largest frame so far.
+  HeapTrim heap_trim(10.0);
   std::uint64_t sync_waits = 0, sync_frames = 0;
   std::optional<std::array<std::uint8_t, io::wire::kCigiStartOfFrameSize>> last_sof;
   auto poll_source = [&](Source& src, std::size_t max_datagrams) {
@@ -233,6 +237,7 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
       control->publish(k + 1, frame_start, io::net::steady_now_s(), feed, last,
                        extra_source ? extra_source->status() : ExtraSourceStatus{});
     if (last || (!runner.context().headless() && runner.window_closed())) break;
+    heap_trim.maybe_trim(io::net::steady_now_s());
     if (runner.context().headless() && !sync) {
       // Own rate; a window paces on vsync; synchronous mode on the host.
       next_tick += period;
@@ -260,6 +265,7 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   if (recorder) extra["recording"] = {{"file", *s.record}, {"datagrams", recorder->count()}};
   if (extra_source) extra[extra_source->summary_key()] = extra_source->summary();
   if (control) extra["modbus"] = control->summary();
+  extra["heap_trim"] = heap_trim.summary();
   return outputs.finish(runner, config, extra);
 }
 
