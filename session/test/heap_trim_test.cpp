@@ -15,8 +15,8 @@ namespace {
 double rss_mb() { return ig::session::process_memory().value("rss_mb", 0.0); }
 
 TEST(HeapTrim, FreedSmallBlocksGoBackToTheSystem) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "AddressSanitizer's allocator replaces malloc: nothing of the C library's heap to trim";
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "A sanitizer's allocator replaces malloc: nothing of the C library's heap to trim";
 #endif
   // 96 MB in 64 KB blocks (under malloc's mmap threshold: heap memory),
   // touched, then all freed but one allocated after them, which keeps the
