@@ -90,42 +90,38 @@ void HostServices::take(std::span<const std::uint8_t> datagram) {
 
 std::vector<CigiResponse> HostServices::answer_frame(const io::Pose& ownship) {
   const auto t0 = std::chrono::steady_clock::now();
+  std::vector<CigiResponse> out;
+  out.reserve(std::min(queue_.size() + periodic_.size(), options_.max_hat_hot_per_frame + options_.max_los_per_frame));
   std::size_t hat_hot = 0, los = 0, bytes = kCigiStartOfFrameSize;
   auto fits = [&](const CigiRequest& q) {
     if (is_los(q) ? los >= options_.max_los_per_frame : hat_hot >= options_.max_hat_hot_per_frame) return false;
     return bytes + response_size(q) <= options_.max_datagram_bytes;
   };
-  auto plan = [&](const CigiRequest& q) {
+  auto spend = [&](const CigiRequest& q) {
     ++(is_los(q) ? los : hat_hot);
     bytes += response_size(q);
-    planned_.push_back(q);
+    out.push_back(answer(q, ownship));
   };
-  planned_.clear();
+  // HAT/HOT points are scattered over a DEM the renderer has just pushed out
+  // of the caches: start fetching the samples of those about to be answered
+  // (geodetic ones; entity offsets are placed from the pose below).
+  std::size_t ahead = 0;
+  for (auto it = queue_.begin(); it != queue_.end() && ahead < options_.max_hat_hot_per_frame; ++it) {
+    const auto* h = std::get_if<HatHotRequest>(&it->request);
+    if (!h || h->coords != CigiCoords::Geodetic || !to_local_) continue;
+    ++ahead;
+    if (const auto p = to_local_(h->point.x, h->point.y, h->point.z)) query_.prefetch(p->x, p->y);
+  }
   for (auto& [key, p] : periodic_) {
     if (p.next_frame > frame_ || !fits(p.request)) continue;  // not due, or due again next frame
-    plan(p.request);
+    spend(p.request);
     ++counters_.periodic_answers;
     p.next_frame = frame_ + update_period(p.request);
   }
   while (!queue_.empty() && fits(queue_.front().request)) {
     if (queue_.front().frame < frame_) ++counters_.deferred;
-    plan(queue_.front().request);
+    spend(queue_.front().request);
     queue_.pop_front();
-  }
-  std::vector<CigiResponse> out(planned_.size());
-  constexpr std::size_t kSplitAt = 64;  // fewer: not worth the hand-over
-  if (options_.answer_threads >= 2 && planned_.size() >= kSplitAt) {
-    if (!worker_) worker_ = std::make_unique<SideWorker>();
-    const std::size_t half = planned_.size() / 2;
-    worker_->run([&] { respond_range(planned_, half, planned_.size(), ownship, out); });
-    respond_range(planned_, 0, half, ownship, out);
-    worker_->wait();
-  } else {
-    respond_range(planned_, 0, planned_.size(), ownship, out);
-  }
-  for (const CigiResponse& r : out) {
-    ++counters_.answered;
-    if (!std::visit([](const auto& a) { return a.valid; }, r)) ++counters_.invalid;
   }
   ++frame_;
   native_hat_hot_ = native_los_ = 0;
@@ -138,19 +134,6 @@ std::vector<CigiResponse> HostServices::answer_frame(const io::Pose& ownship) {
   return out;
 }
 
-void HostServices::respond_range(const std::vector<CigiRequest>& requests, std::size_t a, std::size_t b,
-                                 const io::Pose& ownship, std::vector<CigiResponse>& out) const {
-  // HAT/HOT points are scattered over a DEM the renderer has just pushed out
-  // of the caches: start fetching the samples of all of them first
-  // (geodetic ones; entity offsets are placed from the pose when answered).
-  for (std::size_t k = a; k < b; ++k) {
-    const auto* h = std::get_if<HatHotRequest>(&requests[k]);
-    if (!h || h->coords != CigiCoords::Geodetic || !to_local_) continue;
-    if (const auto p = to_local_(h->point.x, h->point.y, h->point.z)) query_.prefetch(p->x, p->y);
-  }
-  for (std::size_t k = a; k < b; ++k) out[k] = respond(requests[k], ownship);
-}
-
 std::vector<std::uint8_t> HostServices::frame_datagram(const std::array<std::uint8_t, kCigiStartOfFrameSize>& sof,
                                                        const io::Pose& ownship) {
   std::vector<std::uint8_t> d(sof.begin(), sof.end());
@@ -160,14 +143,7 @@ std::vector<std::uint8_t> HostServices::frame_datagram(const std::array<std::uin
 
 CigiResponse HostServices::answer(const CigiRequest& request, const io::Pose& ownship) {
   ++counters_.answered;
-  CigiResponse r = respond(request, ownship);
-  const bool valid = std::visit([](const auto& a) { return a.valid; }, r);
-  if (!valid) ++counters_.invalid;
-  return r;
-}
-
-CigiResponse HostServices::respond(const CigiRequest& request, const io::Pose& ownship) const {
-  return std::visit(
+  CigiResponse r = std::visit(
       [&](const auto& q) -> CigiResponse {
         using T = std::decay_t<decltype(q)>;
         if constexpr (std::is_same_v<T, HatHotRequest>) return hat_hot(q, ownship);
@@ -175,6 +151,9 @@ CigiResponse HostServices::respond(const CigiRequest& request, const io::Pose& o
         else return los_vector(q, ownship);
       },
       request);
+  const bool valid = std::visit([](const auto& a) { return a.valid; }, r);
+  if (!valid) ++counters_.invalid;
+  return r;
 }
 
 std::optional<std::array<std::uint8_t, kNativeQuerySize>> HostServices::answer_native(
@@ -264,14 +243,14 @@ std::optional<terrain::SurfacePoint> HostServices::surface_for_hot(double x_m, d
 }
 
 std::optional<glm::dvec3> HostServices::place(const glm::dvec3& p, CigiCoords c, std::uint16_t entity,
-                                               const io::Pose& ownship) const {
+                                               const io::Pose& ownship) {
   if (c == CigiCoords::Geodetic) return to_local_ ? to_local_(p.x, p.y, p.z) : std::nullopt;
   if (entity != kCigiOwnshipEntity) return std::nullopt;  // only the ownship's pose is known here
   const BodyAxes b = body_axes(ownship);
   return ownship.position + p.x * b.forward + p.y * b.right + p.z * b.down;
 }
 
-HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& ownship) const {
+HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& ownship) {
   HatHotResponse out;
   out.id = r.id;
   out.extended = r.type == HatHotType::Extended;
@@ -289,7 +268,7 @@ HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& own
 }
 
 void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHit>& hit, CigiCoords coords,
-                            const io::Pose& ownship) const {
+                            const io::Pose& ownship) {
   out.visible = !hit;
   out.range_valid = hit.has_value();
   if (!hit) return;
@@ -307,7 +286,7 @@ void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHi
   }
 }
 
-LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& ownship) const {
+LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& ownship) {
   LosResponse out = los_response_for(r, host_frame_);
   const auto from = place(r.source, r.source_coords, r.entity, ownship);
   const auto to = place(r.destination, r.destination_coords,
@@ -318,7 +297,7 @@ LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose
   return out;
 }
 
-LosResponse HostServices::los_vector(const LosVectorRequest& r, const io::Pose& ownship) const {
+LosResponse HostServices::los_vector(const LosVectorRequest& r, const io::Pose& ownship) {
   LosResponse out = los_response_for(r, host_frame_);
   const auto from = place(r.source, r.source_coords, r.entity, ownship);
   if (!from || !query_.inside(from->x, from->y)) return out;

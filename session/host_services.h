@@ -13,7 +13,6 @@
 #include <deque>
 #include <functional>
 #include <map>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -27,7 +26,6 @@
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_queries.h"
 #include "io/wire/native_query.h"
-#include "session/side_worker.h"
 #include "terrain/terrain_query.h"
 
 namespace ig::session {
@@ -42,10 +40,6 @@ struct HostServicesOptions {
   std::size_t max_pending = 20000;
   // Periodic requests held at once (more are refused, "too-many-periodic").
   std::size_t max_periodic = 1024;
-  // Threads answering a frame's requests: 2 splits a frame of at least
-  // 64 answers in half, the second half on a side thread (the answers and
-  // their order are the same either way).
-  int answer_threads = 2;
 };
 
 // Local ENU -> latitude, longitude, altitude (scene_setup.h local_to_geodetic).
@@ -112,19 +106,13 @@ class HostServices {
     std::uint64_t next_frame;
   };
   void drop(const std::string& reason) { ++counters_.dropped[reason]; }
-  // The answering itself reads the terrain and the settings only, so
-  // answers can be computed on two threads at once (counted after).
-  io::wire::CigiResponse respond(const io::wire::CigiRequest& request, const io::Pose& ownship) const;
-  // Prefetches the samples of requests[a, b) and answers them into out[a, b).
-  void respond_range(const std::vector<io::wire::CigiRequest>& requests, std::size_t a, std::size_t b,
-                     const io::Pose& ownship, std::vector<io::wire::CigiResponse>& out) const;
   std::optional<glm::dvec3> place(const glm::dvec3& p, io::wire::CigiCoords c, std::uint16_t entity,
-                                  const io::Pose& ownship) const;
-  io::wire::HatHotResponse hat_hot(const io::wire::HatHotRequest& r, const io::Pose& ownship) const;
-  io::wire::LosResponse los_segment(const io::wire::LosSegmentRequest& r, const io::Pose& ownship) const;
-  io::wire::LosResponse los_vector(const io::wire::LosVectorRequest& r, const io::Pose& ownship) const;
+                                  const io::Pose& ownship);
+  io::wire::HatHotResponse hat_hot(const io::wire::HatHotRequest& r, const io::Pose& ownship);
+  io::wire::LosResponse los_segment(const io::wire::LosSegmentRequest& r, const io::Pose& ownship);
+  io::wire::LosResponse los_vector(const io::wire::LosVectorRequest& r, const io::Pose& ownship);
   void fill_hit(io::wire::LosResponse& out, const std::optional<terrain::LosHit>& hit, io::wire::CigiCoords coords,
-                const io::Pose& ownship) const;
+                const io::Pose& ownship);
   static int kind(const io::wire::CigiRequest& r) { return int(r.index()); }
   // The surface a HAT/HOT is answered from (full resolution, or as drawn).
   std::optional<terrain::SurfacePoint> surface_for_hot(double x_m, double y_m) const;
@@ -140,8 +128,6 @@ class HostServices {
   std::size_t native_hat_hot_ = 0, native_los_ = 0;  // answered natively this frame
   std::uint32_t host_frame_ = 0;
   Counters counters_;
-  std::vector<io::wire::CigiRequest> planned_;  // this frame's requests to answer, in order
-  std::unique_ptr<SideWorker> worker_;          // started at the first frame worth splitting
   double last_frame_ms_ = 0.0, max_frame_ms_ = 0.0, sum_frame_ms_ = 0.0;
   std::uint64_t frames_with_work_ = 0;
 };

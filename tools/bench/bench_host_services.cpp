@@ -13,10 +13,8 @@
 // (what summary.json reports as answer_ms) and encoding the responses,
 // HAT/HOT points over the whole DEM and within 2 km of the ownship, and
 // HAT/HOT alone and LOS alone. DEM_FILE defaults to
-// $IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif. The whole-DEM and 2-km cases
-// run with one answering thread and with two (HostServicesOptions::
-// answer_threads) side by side; answer_frame's process CPU time is printed
-// beside its wall time (two threads share the work, they do not shrink it).
+// $IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif. Single-threaded; answer_frame's
+// process CPU time is printed beside its wall time.
 
 #include <algorithm>
 #include <chrono>
@@ -76,11 +74,9 @@ void print_row(const char* name, std::vector<double> v) {
 }
 
 Figures run(const ig::terrain::Heightfield& hf, const ig::terrain::HeightPyramid& pyramid, const Load& load,
-            int frames, bool flush, int threads = 2) {
-  ig::session::HostServicesOptions options;
-  options.answer_threads = threads;
+            int frames, bool flush) {
   ig::session::HostServices services(hf, ig::terrain::kEarthRadiusM, ig::session::geodetic_placer(hf),
-                                     ig::session::local_to_geodetic(hf), options, &pyramid);
+                                     ig::session::local_to_geodetic(hf), {}, &pyramid);
   CigiRequestMix maker(hf);
   ig::io::Pose own;
   own.position = maker.ownship_at();
@@ -142,10 +138,8 @@ int main(int argc, char** argv) {
               "between frames (cold caches) unless warm\n",
               path.c_str(), hf.width, hf.height, hf.spacing_x_m, hf.spacing_y_m, frames, load.hot, load.los);
   const Load whole = load, near{load.hot, load.los, 2000.0};
-  report("whole DEM, cold caches, one answering thread:", run(hf, pyramid, whole, frames, true, 1));
-  report("whole DEM, cold caches, two answering threads:", run(hf, pyramid, whole, frames, true, 2));
-  report("within 2 km, cold caches, one answering thread:", run(hf, pyramid, near, frames, true, 1));
-  report("within 2 km, cold caches, two answering threads:", run(hf, pyramid, near, frames, true, 2));
+  report("whole DEM, cold caches:", run(hf, pyramid, whole, frames, true));
+  report("within 2 km, cold caches:", run(hf, pyramid, near, frames, true));
   report("whole DEM, warm caches:", run(hf, pyramid, whole, frames, false));
   report("HAT/HOT alone, whole DEM, cold:", run(hf, pyramid, Load{load.hot, 0, 0.0}, frames, true));
   report("HAT/HOT alone, within 2 km, cold:", run(hf, pyramid, Load{load.hot, 0, 2000.0}, frames, true));
