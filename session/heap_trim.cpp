@@ -17,11 +17,11 @@ bool HeapTrim::maybe_trim(double now_s) {
 }
 
 void HeapTrim::trim() {
-  const double before = process_memory().value("rss_mb", 0.0);
+  const double before = resident_mb();
   const auto t0 = std::chrono::steady_clock::now();
   malloc_trim(0);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  const double after = process_memory().value("rss_mb", 0.0);
+  const double after = resident_mb();
   ++trims_;
   ms_total_ += ms;
   ms_max_ = std::max(ms_max_, ms);

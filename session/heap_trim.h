@@ -1,11 +1,12 @@
 #pragma once
 // Returns the C library's free heap pages to the system at most once every
-// `every_s` seconds, for long runs. The renderer's per-frame memory (with
-// llvmpipe: the binned triangles of each frame, in 64 KB blocks, freed when
-// the frame is done) stays in malloc's free lists at the size of the largest
-// frame so far, so resident memory steps up at each new largest frame and
-// never comes down; trimming gives those pages back. It costs about a
-// millisecond; the live loop calls it after a frame is sent.
+// `every_s` seconds, for long runs. Memory the renderer frees after a frame
+// stays in malloc's free lists at the size of the largest frame so far (with
+// llvmpipe, resident memory steps up at each new largest frame and never comes
+// down; presumably its per-frame binning memory, not traced in Mesa's
+// source); trimming gives those pages back. It cost 1-2 ms a trim on the
+// development VM (up to 15 ms overloaded); the live loop calls it after a
+// frame is sent.
 
 #include <nlohmann/json.hpp>
 

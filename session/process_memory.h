@@ -14,4 +14,8 @@ namespace ig::session {
 // every arena).
 nlohmann::json process_memory();
 
+// VmRSS alone, in MB (0 where unreadable): cheap enough to read around
+// each heap trim, unlike the heap figures (mallinfo2 walks every arena).
+double resident_mb();
+
 }  // namespace ig::session

@@ -37,10 +37,6 @@ void HorizonCulling::bucket_by_ring(std::vector<Order>& items, RingOf ring_of) {
   items.swap(sorted_);
 }
 
-namespace {
-
-}  // namespace
-
 HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int bins)
     : floors_(std::move(floors)),
       spacing_(spacing_m),

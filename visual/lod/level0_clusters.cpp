@@ -97,10 +97,8 @@ int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const Box
   // its box): one test for most of a whole-DEM mesh at a narrow field of view.
   for (const Group& g : groups_) {
     if (inside_square(g.lo, g.hi)) continue;
-    const bool group_visible = [&] {
-      const HorizonCulling::Box b = box_of(g);
-      return visible(b.lo, b.hi);
-    }();
+    const HorizonCulling::Box group_box = box_of(g);
+    const bool group_visible = visible(group_box.lo, group_box.hi);
     for (std::uint32_t k = g.first_cluster; k < g.first_cluster + g.clusters; ++k) {
       const Cluster& c = clusters_[k];
       if (inside_square(c.lo, c.hi)) continue;
