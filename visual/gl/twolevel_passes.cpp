@@ -32,9 +32,17 @@ TwoLevelPasses::TwoLevelPasses(const std::string& shader_dir, const TwoLevelStag
 }
 
 Level1SizeMeshes& TwoLevelPasses::meshes_for(int n, int band_w) {
-  auto& slot = size_meshes_[{n, band_w}];
-  if (!slot) slot = std::make_unique<Level1SizeMeshes>(n, band_w, std::min(options_.band_stride, std::max(band_w, 1)));
-  return *slot;
+  constexpr std::size_t kKept = 2;
+  const std::pair<int, int> key{n, band_w};
+  auto hit = std::find_if(size_meshes_.begin(), size_meshes_.end(), [&](const SizedMeshes& m) { return m.key == key; });
+  if (hit == size_meshes_.end()) {
+    if (size_meshes_.size() >= kKept) size_meshes_.pop_back();
+    size_meshes_.push_back(
+        {key, std::make_unique<Level1SizeMeshes>(n, band_w, std::min(options_.band_stride, std::max(band_w, 1)))});
+    hit = size_meshes_.end() - 1;
+  }
+  std::rotate(size_meshes_.begin(), hit, hit + 1);
+  return *size_meshes_.front().meshes;
 }
 
 bool TwoLevelPasses::skipped(const char* pass) const {

@@ -7,7 +7,6 @@
 // whose result (read a frame later, never waiting) steers the next size.
 
 #include <functional>
-#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -76,7 +75,14 @@ class TwoLevelPasses {
   bool count_multisampled_ = false;
   Level0Buffer level0_;
   double level0_max_error_m_ = 0.0;  // the band's depth tolerance is twice it
-  std::map<std::pair<int, int>, std::unique_ptr<Level1SizeMeshes>> size_meshes_;
+  // The meshes of the last two (N, w) pairs drawn: enough for a size that
+  // steps back and forth, while a flight through many sizes keeps no more
+  // (the ring at N = 1025 alone is megabytes).
+  struct SizedMeshes {
+    std::pair<int, int> key;
+    std::unique_ptr<Level1SizeMeshes> meshes;
+  };
+  std::vector<SizedMeshes> size_meshes_;  // most recently used first
   std::unique_ptr<RenderTarget> band_target_;
   BetaTemplate beta_;
   // The level0 runs as glMultiDrawElements takes them (counts, byte offsets).
