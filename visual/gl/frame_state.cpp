@@ -2,6 +2,8 @@
 
 #include <epoxy/gl.h>
 
+#include "gl/draw_pacing.h"
+
 namespace ig::gl {
 
 void use_frame_depth_test() {
@@ -27,7 +29,10 @@ void begin_frame(bool cull_back_faces) {
 
 void set_wireframe(bool on) { glPolygonMode(GL_FRONT_AND_BACK, on ? GL_LINE : GL_FILL); }
 
-void finish() { glFinish(); }
+void finish() {
+  glFinish();
+  end_draw_pacing();
+}
 
 bool clip_depth_zero_to_one() {
   GLint clip_depth = 0;

@@ -4,6 +4,8 @@
 
 #include <cstdlib>
 
+#include "gl/draw_pacing.h"
+
 namespace ig::gl {
 
 void GlContext::read_strings() {
@@ -13,6 +15,7 @@ void GlContext::read_strings() {
   };
   version_ = str(GL_VERSION);
   renderer_ = str(GL_RENDERER);
+  set_draw_pacing(needs_draw_pacing(renderer_));
 }
 
 std::unique_ptr<GlContext> create_context(const ContextOptions& options) {

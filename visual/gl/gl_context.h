@@ -35,7 +35,9 @@ class GlContext {
   const std::string& gl_renderer() const { return renderer_; }
 
  protected:
-  void read_strings();  // fills version_/renderer_ once the context is current
+  // Fills version_/renderer_ once the context is current, and paces draws
+  // on a software rasterizer (gl/draw_pacing.h).
+  void read_strings();
   std::string version_, renderer_;
 };
 

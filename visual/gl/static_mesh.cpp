@@ -1,6 +1,6 @@
 #include "gl/static_mesh.h"
 
-#include "gl/work_counters.h"
+#include "gl/draw_pacing.h"
 
 namespace ig::gl {
 
@@ -26,10 +26,7 @@ void StaticMesh::draw(int list, int first, int count) const {
   const IndexList& l = lists_[static_cast<std::size_t>(list)];
   glVertexArrayElementBuffer(vao_.id(), l.buffer.id());
   glBindVertexArray(vao_.id());
-  const std::size_t index_bytes = l.wide ? sizeof(std::uint32_t) : sizeof(std::uint16_t);
-  glDrawElements(GL_TRIANGLES, count, l.wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT,
-                 reinterpret_cast<const void*>(std::size_t(first) * index_bytes));
-  count_draw();
+  draw_indexed_triangles(l.wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT, first, count);
 }
 
 }  // namespace ig::gl

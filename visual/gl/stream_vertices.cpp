@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gl/draw_pacing.h"
 #include "gl/work_counters.h"
 
 namespace ig::gl {
@@ -21,8 +22,7 @@ void StreamVertices::draw(const std::vector<glm::u16vec2>& vertices) {
   glNamedBufferSubData(vbo_.id(), 0, bytes, vertices.data());
   count_upload(std::uint64_t(bytes));
   glBindVertexArray(vao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices.size()));
-  count_draw();
+  draw_triangle_list(0, GLsizei(vertices.size()));
 }
 
 }  // namespace ig::gl

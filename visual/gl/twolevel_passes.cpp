@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "gl/coverage_codes.h"
+#include "gl/draw_pacing.h"
 #include "gl/scoped_disable.h"
 #include "gl/texture_units.h"
 #include "gl/work_counters.h"
@@ -101,9 +102,8 @@ void TwoLevelPasses::draw_level1(const lod::TwoLevelSelection& sel, const TwoLev
   glBindVertexArray(m.wall_vao.id());
   {
     const ScopedDisable two_sided(GL_CULL_FACE);  // a wall is seen from inside or outside the square
-    glDrawElements(GL_TRIANGLES, m.wall_indices, GL_UNSIGNED_INT, nullptr);
+    draw_indexed_triangles(GL_UNSIGNED_INT, 0, m.wall_indices);
   }
-  count_draw();
   drawn.passes.push_back("level1");
 }
 
@@ -136,8 +136,7 @@ bool TwoLevelPasses::draw_band(const lod::TwoLevelSelection& sel, const TwoLevel
   band_program_.set("u_origin", sel.origin);
   band_program_.set("u_origin_rel", relative(sel.origin, ctx));
   glBindVertexArray(m.ring_vao.id());
-  glDrawElements(GL_TRIANGLES, m.ring_indices, GL_UNSIGNED_INT, nullptr);
-  count_draw();
+  draw_indexed_triangles(GL_UNSIGNED_INT, 0, m.ring_indices);
   glDisable(GL_SCISSOR_TEST);
   drawn.band_tris = m.ring_indices / 3;
   drawn.passes.push_back("band");
@@ -184,9 +183,7 @@ void TwoLevelPasses::draw_level0(const lod::TwoLevelSelection& sel, const TwoLev
     program.set("u_level1_half", 0.5f * float(n - 1));
     program.set("u_near_far", glm::vec2(float(ctx.near_m), float(ctx.far_m)));
     program.set("u_band_tolerance_m", float(2.0 * level0_max_error_m_));
-    glMultiDrawElements(GL_TRIANGLES, draw_counts_.data(), GL_UNSIGNED_INT, draw_offsets_.data(),
-                        GLsizei(draw_counts_.size()));
-    count_draw();
+    draw_indexed_runs(draw_counts_, draw_offsets_);
   }
   for (const auto& runs : sel.level0_runs) drawn.level0_tris += (long long)runs.indices() / 3;
   if (drawn.level0_tris > 0) drawn.passes.push_back("level0");

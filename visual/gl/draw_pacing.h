@@ -1,0 +1,47 @@
+#pragma once
+// Paces triangle draws on a software rasterizer so its memory does not
+// depend on the heaviest frame of the run.
+//
+// llvmpipe bins triangles into "scenes" (at most 9 MB of bin data each) that
+// its worker threads rasterize while the next scene fills; when binning runs
+// ahead it opens another scene. A scene keeps its bin memory until the
+// driver reuses it, and it reuses the lowest-numbered idle scene first, so
+// the scenes only one heavy frame needed stay full for the rest of the run
+// (measured: one 1.36 M-triangle frame left 43 MB held). With pacing on,
+// every kPacedTriangles triangles the draws fence the chunk and wait until
+// the chunk before it is done: the scenes in flight no longer depend on the
+// frame's weight, and the rasterizer still has a chunk to work on while the
+// next is binned. (Smaller chunks hold less after a heavy frame but cost
+// more: 16 384 made the run's 1.36 M-triangle frames 15 % slower.)
+// A GPU driver pools no per-frame memory this way and a mid-frame wait
+// would only cost it, so pacing is on only on software rasterizers.
+//
+// Every terrain draw goes through these calls (all methods alike); each
+// GL draw call made is counted (gl/work_counters.h).
+
+#include <epoxy/gl.h>
+
+#include <string>
+#include <vector>
+
+namespace ig::gl {
+
+constexpr long long kPacedTriangles = 65536;
+
+// Per thread (the thread's current context). gl::finish() ends a frame's pacing.
+void set_draw_pacing(bool on);
+bool draw_pacing();
+// Whether a renderer (GL_RENDERER) is a software rasterizer that needs pacing.
+bool needs_draw_pacing(const std::string& renderer);
+
+// glDrawElements(GL_TRIANGLES) of `count` indices from index `first`.
+void draw_indexed_triangles(GLenum index_type, GLsizei first, GLsizei count);
+// glDrawArrays(GL_TRIANGLES) of `count` vertices from `first`.
+void draw_triangle_list(GLint first, GLsizei count);
+// glMultiDrawElements(GL_TRIANGLES) of 32-bit index runs (counts, byte offsets).
+void draw_indexed_runs(const std::vector<GLsizei>& counts, const std::vector<const void*>& offsets);
+
+// Deletes the pacing fences (everything issued has finished).
+void end_draw_pacing();
+
+}  // namespace ig::gl
