@@ -23,6 +23,13 @@
       prints PASS / FAIL lines (ig serve exit status 0, summary.json
       written, over the --check-for seconds after the warm-up resident
       memory within MB and open files and threads constant).
+
+  soak_report.py replay RUN_DIR OUT.json [--first F] [--last F] [--every N]
+      An `ig run` scenario that flies again, offline, frames F..L of the
+      soak (every Nth frame's rendered pose from serve/frames.csv as a path
+      key, terrain-local, at the soak's image size and the scenario's
+      field of view and terrain): a stretch of the hour (its largest
+      frames, say) to profile or trace in a minute.
 """
 import argparse
 import csv
@@ -342,6 +349,38 @@ def report(args):
     return 1 if failures else 0
 
 
+def replay(args):
+    with open(os.path.join(args.run_dir, "run.json")) as f:
+        run = json.load(f)
+    with open(os.path.join(args.run_dir, "scenario.json")) as f:
+        scenario = json.load(f)
+    keys, t0 = [], None
+    with open(os.path.join(args.run_dir, "serve", "frames.csv")) as f:
+        for row in csv.DictReader(f):
+            frame = int(row["frame"])
+            if frame < args.first or (args.last is not None and frame > args.last) or (frame - args.first) % args.every:
+                continue
+            t = float(row["sim_time_s"])
+            t0 = t if t0 is None else t0
+            keys.append({"t": round(t - t0, 3),
+                         "position": [float(row["x_m"]), float(row["y_m"]), float(row["z_m"])],
+                         "hpr": [float(row["heading_deg"]), float(row["pitch_deg"]), float(row["roll_deg"])]})
+    if len(keys) < 2 or keys[-1]["t"] <= 0:
+        print("soak_report.py replay: fewer than two frames from %d to %s in %s" % (
+            args.first, args.last, args.run_dir), file=sys.stderr)
+        return 1
+    width, height = (int(v) for v in run["size"].split("x"))
+    out = {"name": scenario.get("name", "soak") + "_replay", "terrain": scenario["terrain"],
+           "render": dict(scenario.get("render", {}), width=width, height=height),
+           "time": {"step_s": args.step, "duration_s": keys[-1]["t"]},
+           "path": {"frame": "local", "keys": keys}}
+    with open(args.out, "w") as f:
+        json.dump(out, f, indent=1)
+    print("soak_report.py replay: %d keys over %.1f s (frames %d to %s) -> %s" % (
+        len(keys), keys[-1]["t"], args.first, args.last, args.out))
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -355,8 +394,15 @@ def main():
     r.add_argument("--table-every", type=float, default=0.0)
     r.add_argument("--check-flat-mb", type=float)
     r.add_argument("--check-for", type=float, default=30.0)
+    p = sub.add_parser("replay")
+    p.add_argument("run_dir")
+    p.add_argument("out")
+    p.add_argument("--first", type=int, default=0)
+    p.add_argument("--last", type=int)
+    p.add_argument("--every", type=int, default=60)
+    p.add_argument("--step", type=float, default=0.25, help="the replay's time step, seconds")
     args = ap.parse_args()
-    return sample(args) if args.cmd == "sample" else report(args)
+    return {"sample": sample, "report": report, "replay": replay}[args.cmd](args)
 
 
 if __name__ == "__main__":
