@@ -11,10 +11,11 @@
 // every kPacedTriangles triangles the draws fence the chunk and wait until
 // the chunk before it is done: the scenes in flight no longer depend on the
 // frame's weight, and the rasterizer still has a chunk to work on while the
-// next is binned. (Smaller chunks hold less after a heavy frame but cost
-// more: 16 384 made the run's 1.36 M-triangle frames 15 % slower.)
-// A GPU driver pools no per-frame memory this way and a mid-frame wait
-// would only cost it, so pacing is on only on software rasterizers.
+// next is binned. It costs the heaviest frames about 14 % on llvmpipe;
+// chunks of 16 384 to 262 144 triangles timed within the machine's spread
+// of each other, and 524 288 held as much as no pacing (docs/results.md).
+// On a GPU a mid-frame wait would stall its pipeline and no such growth was
+// measured, so pacing is on only on software rasterizers.
 //
 // Every terrain draw goes through these calls (all methods alike); each
 // GL draw call made is counted (gl/work_counters.h).
