@@ -207,7 +207,9 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
   // The seam walls: each spans from the higher of (Level1 edge, Level0
   // surface) down to a little below the lower one, so no sliver opens where
   // Level0's surface bends between edge samples.
-  if (!sel_.visible_blocks.empty()) {
+  if (!sel_.visible_blocks.empty() && (walls_n_ != n || walls_origin_ != origin)) {
+    walls_n_ = n;
+    walls_origin_ = origin;
     if (perimeter_n_ != n) {
       perimeter_ = level1_perimeter(n);
       perimeter_n_ = n;

@@ -193,4 +193,38 @@ TEST(TwoLevelSelection, WallsFollowThePerimeter) {
   EXPECT_EQ(ig::lod::level1_perimeter(33).size(), 4u * 32u);
 }
 
+// The walls are kept while the square stays put and made again when it
+// moves or resizes: after every frame of a flight they are the heights of
+// the square the frame selected.
+TEST(TwoLevelSelection, WallsAreThoseOfTheSquareOfEveryFrame) {
+  const World world;
+  ig::options::TwoLevelOptions options;
+  options.level0_budget = 2048;
+  auto selector = world.selector(options);
+  int kept = 0, moved = 0;
+  glm::ivec2 last_origin{-1};
+  int last_n = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    // Slow (a fraction of a sample a frame), then a turn that moves E far.
+    const double heading = frame < 40 ? 45.0 : 135.0;
+    const auto& sel = selector.select(view_at(world.hf, 200 + 0.3 * frame, 200, 300.0, heading, -30.0), 0.5);
+    if (sel.visible_blocks.empty()) continue;
+    (sel.origin == last_origin && sel.n == last_n ? kept : moved) += 1;
+    last_origin = sel.origin;
+    last_n = sel.n;
+    const auto perimeter = ig::lod::level1_perimeter(sel.n);
+    ASSERT_EQ(sel.wall_z.size(), 2 * perimeter.size()) << "frame " << frame;
+    for (size_t k = 0; k < perimeter.size(); ++k) {
+      const glm::ivec2 s = sel.origin + perimeter[k];
+      const float h1 = world.hf.at_clamped(s.x, s.y);
+      const double q = selector.level0_heights().height_at(s.x, s.y);
+      const float h0 = std::isfinite(q) ? float(q) : h1;
+      ASSERT_EQ(sel.wall_z[2 * k].y, std::max(h0, h1)) << "frame " << frame << " sample " << k;
+      ASSERT_EQ(sel.wall_z[2 * k + 1].y, std::min(h0, h1) - 1.0f) << "frame " << frame << " sample " << k;
+    }
+  }
+  EXPECT_GT(kept, 10);
+  EXPECT_GT(moved, 1);
+}
+
 }  // namespace
