@@ -12,8 +12,8 @@
 // the chunk before it is done: the scenes in flight no longer depend on the
 // frame's weight, and the rasterizer still has a chunk to work on while the
 // next is binned. It costs the heaviest frames about 14 % on llvmpipe;
-// chunks of 16 384 to 262 144 triangles timed within the machine's spread
-// of each other, and 524 288 held as much as no pacing (docs/results.md).
+// chunks of 131 072 and 262 144 triangles timed the same, and 524 288 held
+// as much as no pacing (docs/results.md).
 // On a GPU a mid-frame wait would stall its pipeline and no such growth was
 // measured, so pacing is on only on software rasterizers.
 //

@@ -208,12 +208,9 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
   // surface) down to a little below the lower one, so no sliver opens where
   // Level0's surface bends between edge samples.
   if (!sel_.visible_blocks.empty() && (walls_n_ != n || walls_origin_ != origin)) {
+    if (walls_n_ != n) perimeter_ = level1_perimeter(n);
     walls_n_ = n;
     walls_origin_ = origin;
-    if (perimeter_n_ != n) {
-      perimeter_ = level1_perimeter(n);
-      perimeter_n_ = n;
-    }
     constexpr float kBelow = 1.0f;
     sel_.wall_z.resize(perimeter_.size() * 2);
     int hint = -1;  // the perimeter walks from sample to neighbouring sample

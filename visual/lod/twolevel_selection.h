@@ -118,11 +118,10 @@ class TwoLevelSelector {
   Level1SizeController controller_;
   double level0_resolution_ = 0.0;
   std::vector<glm::dvec3> prediction_rays_;
-  std::vector<glm::ivec2> perimeter_;  // of perimeter_n_
-  int perimeter_n_ = 0;
-  // The square sel_.wall_z was made for: its heights depend on nothing else
-  // (the DEM and Level0 do not change), and the square moves only when E
-  // crosses a sample.
+  // The square sel_.wall_z (and perimeter_, of walls_n_) was made for: the
+  // walls' heights depend on nothing else (the DEM and Level0 do not
+  // change), and the square moves by whole samples, not every frame.
+  std::vector<glm::ivec2> perimeter_;
   glm::ivec2 walls_origin_{0};
   int walls_n_ = 0;
   TwoLevelSelection sel_;

@@ -5,10 +5,10 @@
 set -uo pipefail
 src=$1 build=$2
 run=$build/test-out/soak out=$build/test-out/soak_check
-check() {  # name edit-expression expected(PASS|FAIL)
+check() {  # edit (dip|leak) expected(PASS|FAIL)
   local dir=$out/$1
   rm -rf "$dir" && mkdir -p "$dir" && cp -r "$run"/. "$dir"/
-  python3 - "$run/samples.csv" "$dir/samples.csv" "$2" <<'PY' || exit 1
+  python3 - "$run/samples.csv" "$dir/samples.csv" "$1" <<'PY' || exit 1
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 t0 = float(rows[0]["t_s"])
@@ -30,10 +30,10 @@ PY
   got=$(python3 "$src/tools/bench/soak_report.py" report "$dir" --warmup 12 --check-flat-mb 2 --check-for 30 |
         grep -E '^(check|PASS soak|FAIL soak)')
   echo "$1: $got" | sed 's/^/  /'
-  if grep -q "^$3 soak" <<<"$got"; then echo "ok: $1 gives $3"; else echo "FAIL: $1 should give $3"; status=1; fi
+  if grep -q "^$2 soak" <<<"$got"; then echo "ok: $1 gives $2"; else echo "FAIL: $1 should give $2"; status=1; fi
 }
 status=0
-check dip dip PASS
-check leak leak FAIL
+check dip PASS
+check leak FAIL
 [ $status = 0 ] && echo "PASS soak check" || echo "FAIL soak check"
 exit $status

@@ -33,7 +33,7 @@ for f in frames:
     i = bracket(float(f["sim_time_s"]))
     a, b = keys[i]["position"], keys[i + 1]["position"]
     length = sum((a[j] - b[j]) ** 2 for j in range(3)) ** 0.5
-    p = [float(f[c]) for c in ("x_m", "y_m", "z_m")]
+    p = [float(f[c]) for c in cols[:3]]
     out = max(max(min(a[j], b[j]) - p[j], p[j] - max(a[j], b[j]), 0.0) for j in range(3))
     worst_ratio = max(worst_ratio, out / max(length, 1e-6))
     if out > 1.0 + 0.25 * length:
