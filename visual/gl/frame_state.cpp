@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include "gl/coverage_codes.h"
 #include "gl/draw_pacing.h"
 
 namespace ig::gl {
@@ -22,7 +23,9 @@ void begin_frame(bool cull_back_faces) {
   } else {
     glDisable(GL_CULL_FACE);
   }
-  glClearColor(0.f, 0.f, 0.f, 1.f);
+  // Alpha is the coverage code: a pixel no terrain pass draws is sky until
+  // the sky pass fills it, also for the two-level count that runs before it.
+  glClearColor(0.f, 0.f, 0.f, coverage::kSky);
   glClearDepth(0.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }

@@ -181,6 +181,9 @@ TEST(TwoLevel, EyeGuardPutsTheGroundUnderALowEyeInLevel1) {
   for (bool guard : {true, false}) {
     Scenario s = with_keys(default_scenario(), {key(0, 5200, 12500, 40, 95, -1)}, AltitudeMode::AboveGround);
     s.render.twolevel.eye_guard = guard;
+    // Squares up to 513 a side: the largest, 1025, which the controller takes
+    // for this view, would hold the eye with E 10 km out either way.
+    s.render.twolevel.max_level1 = 513;
     ScenarioRunner runner(s, options("twolevel", kW, kH));
     auto& tl = twolevel(runner);
     for (int k = 0; k < 3; ++k) runner.render_frame(0);
@@ -218,6 +221,40 @@ TEST(TwoLevel, SkyOnlyViewRunsNoTerrainPass) {
     long long terrain = 0;
     for (float d : f.depth) terrain += d != 0.0f;
     EXPECT_EQ(terrain, 0);
+  }
+}
+
+// The coverage ratio R that steers Level1's size is Level1's share of the
+// terrain pixels of the finished frame: counted from the frame's coverage
+// codes on the same samples (every 4th pixel each way) it must come out
+// exactly, also where the view shows sky (pixels the sky pass fills after
+// the terrain is drawn must not count as terrain).
+TEST(TwoLevel, CoverageRatioIsLevel1sShareOfTheFramesTerrain) {
+  constexpr int kW = 203, kH = 150, kStep = 4;  // a width that is no multiple of the step
+  const Scenario base = default_scenario();
+  for (const char* antialiasing : {"off", "fxaa"}) {
+    Scenario s = with_keys(base, {base.path.keys.front()}, AltitudeMode::AboveGround);
+    s.render.antialiasing = antialiasing;
+    ScenarioRunner runner(s, options("twolevel", kW, kH));
+    auto& tl = twolevel(runner);
+    runner.render_frame(0);
+    const Frame f = grab(runner);
+    long long level1 = 0, terrain = 0, sky = 0;
+    for (int qy = 0; qy < (kH + kStep - 1) / kStep; ++qy)
+      for (int qx = 0; qx < (kW + kStep - 1) / kStep; ++qx) {
+        // The count's samples are in GL's rows (bottom first); the frame holds the top row first.
+        const int x = std::min(qx * kStep + kStep / 2, kW - 1), y = std::min(qy * kStep + kStep / 2, kH - 1);
+        const int a = f.alpha(x, kH - 1 - y);
+        level1 += a >= 0.75 * 255;
+        terrain += a >= 0.25 * 255;
+        sky += a < 0.25 * 255;
+      }
+    runner.render_frame(0);  // R is read a frame later
+    std::printf("[coverage] %s: level1 %lld, terrain %lld, sky %lld samples; R %.4f, counted %.4f\n", antialiasing,
+                level1, terrain, sky, tl.last_ratio(), double(level1) / double(terrain));
+    ASSERT_GT(sky, 0) << "the view should show sky";
+    ASSERT_GT(terrain - level1, 0) << "and Level0";
+    EXPECT_DOUBLE_EQ(tl.last_ratio(), double(level1) / double(terrain)) << antialiasing;
   }
 }
 
