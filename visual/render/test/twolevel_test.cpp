@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gl/coverage_codes.h"
 #include "render/test/twolevel_checks.h"
 
 namespace {
@@ -245,9 +246,9 @@ TEST(TwoLevel, CoverageRatioIsLevel1sShareOfTheFramesTerrain) {
         // The count's samples are in GL's rows (bottom first); the frame holds the top row first.
         const int x = std::min(qx * kStep + kStep / 2, kW - 1), y = std::min(qy * kStep + kStep / 2, kH - 1);
         const int a = f.alpha(x, kH - 1 - y);
-        level1 += a >= 0.75 * 255;
-        terrain += a >= 0.25 * 255;
-        sky += a < 0.25 * 255;
+        level1 += a >= ig::gl::coverage::kAtLeastLevel1 * 255;
+        terrain += a >= ig::gl::coverage::kAnyTerrain * 255;
+        sky += a < ig::gl::coverage::kAnyTerrain * 255;
       }
     runner.render_frame(0);  // R is read a frame later
     std::printf("[coverage] %s: level1 %lld, terrain %lld, sky %lld samples; R %.4f, counted %.4f\n", antialiasing,
