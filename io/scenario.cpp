@@ -107,7 +107,8 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   check_keys(j, path,
              {"width", "height", "fov_y_deg", "near_m", "far_m", "method", "fog_visibility_m", "sky_zenith_rgb",
               "sky_horizon_rgb", "sun_direction", "imagery", "frame_budget_ms", "vsync", "earth_curvature", "twolevel",
-              "roam", "quadtree", "geomipmap", "chunked", "cdlod", "ground_detail", "antialiasing", "msaa_samples"});
+              "roam", "quadtree", "geomipmap", "chunked", "cdlod", "ground_detail", "deferred_shading", "antialiasing",
+              "msaa_samples"});
   RenderSpec r;
   if (j.contains("width")) r.width = static_cast<int>(get_integer(j["width"], child(path, "width"), 1, kMaxImageSide));
   if (j.contains("height")) r.height = static_cast<int>(get_integer(j["height"], child(path, "height"), 1, kMaxImageSide));
@@ -146,6 +147,8 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
     r.earth_curvature = get_choice(j["earth_curvature"], child(path, "earth_curvature"), {"auto", "on", "off"});
   parse_method_options(j, path, r);
   if (j.contains("ground_detail")) r.shading.ground_detail = get_bool(j["ground_detail"], child(path, "ground_detail"));
+  if (j.contains("deferred_shading"))
+    r.shading.deferred_shading = get_bool(j["deferred_shading"], child(path, "deferred_shading"));
   if (j.contains("antialiasing"))
     r.antialiasing = get_choice(j["antialiasing"], child(path, "antialiasing"), {"auto", "msaa", "fxaa", "off"});
   if (j.contains("msaa_samples"))

@@ -40,6 +40,11 @@ struct ShadingOptions {
   // Ground detail fixed to the terrain (render.ground_detail): materials and
   // grain that give a low-flying pilot cues of speed and height.
   bool ground_detail = true;
+  // Deferred shading (render.deferred_shading): the terrain passes store each
+  // pixel's surface coordinate, footprint and distance, and one full-screen
+  // pass shades every covered pixel once (shaders/shade_deferred.frag). The
+  // picture is the same; only single-sampled frames (fxaa, off) can.
+  bool deferred_shading = true;
 };
 
 }  // namespace ig::options

@@ -60,6 +60,8 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   co.title = "ig - " + scenario_.name;
   context_ = gl::create_context(co);
   r.antialiasing = resolve_antialiasing(r.antialiasing, context_->gl_renderer());
+  // A multisampled frame shades its samples where they are drawn.
+  if (r.antialiasing == "msaa") r.shading.deferred_shading = false;
 
   scene_ = std::make_unique<render::TerrainScene>(heightfield_, r.shading, r.imagery, scenario_.terrain.texture_limit,
                                                   std::size_t(scenario_.terrain.imagery_budget_mb) << 20);

@@ -1,10 +1,13 @@
 #version 450 core
-// Terrain shading shared by every LOD method (linked into each terrain
-// program). The colour of a pixel is a function of its DEM texture coordinate
-// (sample space) and its distance only: per-pixel normal and height from the
-// full-resolution height texture, a height and slope colour ramp (or an
-// imagery texture), one directional light, fog. So methods differ only in
-// where each pixel's coordinate lands.
+// Terrain shading shared by every LOD method. The colour of a pixel is a
+// function of its DEM texture coordinate (sample space), the coordinate's
+// screen derivatives (texture filtering) and its distance only: per-pixel
+// normal and height from the full-resolution height texture, a height and
+// slope colour ramp (or an imagery texture), one directional light, fog. So
+// methods differ only in where each pixel's coordinate lands, and the colour
+// can be computed in the terrain pass (shade_forward.frag) or from those
+// values stored per pixel, once per pixel (shade_deferred.frag,
+// deferred_shade.frag).
 uniform sampler2D u_height;     // R32F, linear filtering for normals
 uniform sampler2D u_height_window;  // full-resolution window, wrap-around (render/height_window_texture.h)
 uniform ivec2 u_window_origin;  // the window's south-west sample
@@ -40,13 +43,15 @@ float height_at(vec2 s) {
   return textureLod(u_height, (s + 0.5) / vec2(u_dem_size), 0.0).r;
 }
 
-vec3 imagery_at(vec2 s) {
+// s_dx, s_dy: the screen derivatives of s.
+vec3 imagery_at(vec2 s, vec2 s_dx, vec2 s_dy) {
   vec2 uv = (s + 0.5) / vec2(u_dem_size);
   if (u_imagery_window_size.x > 0) {
     // Full-resolution pixel coordinates (pixel k centred at k + 0.5) and
-    // their screen derivatives, taken before the per-fragment choice.
+    // their screen derivatives.
+    vec2 to_full = vec2(u_imagery_full_size) / vec2(u_dem_size);
     vec2 p = uv * vec2(u_imagery_full_size);
-    vec2 px = dFdx(p), py = dFdy(p);
+    vec2 px = s_dx * to_full, py = s_dy * to_full;
     vec2 r = p - 0.5 - vec2(u_imagery_window_origin);
     // The window where both bilinear neighbours are in it. The window has no
     // mipmaps, so as a whole texture's trilinear filter would: level 0 alone
@@ -64,7 +69,8 @@ vec3 imagery_at(vec2 s) {
     vec2 to_overview = u_imagery_overview_scale / vec2(u_imagery_full_size);
     return textureGrad(u_imagery, uv * u_imagery_overview_scale, px * to_overview, py * to_overview).rgb;
   }
-  return texture(u_imagery, uv * u_imagery_overview_scale).rgb;  // scale 1 for imagery that fits
+  vec2 to_uv = u_imagery_overview_scale / vec2(u_dem_size);  // scale 1 for imagery that fits
+  return textureGrad(u_imagery, uv * u_imagery_overview_scale, s_dx * to_uv, s_dy * to_uv).rgb;
 }
 
 vec3 ramp(float h01, float slope) {
@@ -81,16 +87,16 @@ vec3 ramp(float h01, float slope) {
 
 // The surface colour before light: ground_plain.frag or ground_detail.frag
 // (render/terrain_scene.h, TerrainScene::shading_stages).
-vec3 surface_albedo(vec2 s, float h01, float slope);
+vec3 surface_albedo(vec2 s, vec2 s_dx, vec2 s_dy, float h01, float slope);
 
-vec3 shade(vec2 s, float dist) {
+vec3 shade_at(vec2 s, vec2 s_dx, vec2 s_dy, float dist) {
   float hl = height_at(s - vec2(1, 0)), hr = height_at(s + vec2(1, 0));
   float hd = height_at(s - vec2(0, 1)), hu = height_at(s + vec2(0, 1));
   vec3 n = normalize(vec3(-(hr - hl) / (2.0 * u_spacing.x), -(hu - hd) / (2.0 * u_spacing.y), 1.0));
   float slope = 1.0 - n.z;
   float span = max(u_height_range.y - u_height_range.x, 1.0);
   float h01 = clamp((height_at(s) - u_height_range.x) / span, 0.0, 1.0);
-  vec3 albedo = surface_albedo(s, h01, clamp(slope * 3.0, 0.0, 1.0));
+  vec3 albedo = surface_albedo(s, s_dx, s_dy, h01, clamp(slope * 3.0, 0.0, 1.0));
   float diffuse = max(dot(n, u_sun_dir), 0.0);
   vec3 color = albedo * (u_ambient + u_light_color * diffuse);
   float fog = 1.0 - exp(-(u_fog_k * dist) * (u_fog_k * dist));

@@ -179,6 +179,7 @@ TEST(Scenario, Defaults) {
   EXPECT_EQ(s.render.shading.sky_zenith, r0.shading.sky_zenith);
   EXPECT_EQ(s.render.shading.sky_horizon, r0.shading.sky_horizon);
   EXPECT_EQ(s.render.shading.sun_direction, r0.shading.sun_direction);
+  EXPECT_TRUE(s.render.shading.deferred_shading);
   EXPECT_FALSE(s.render.imagery.has_value());
   EXPECT_EQ(s.render.frame_budget_ms, r0.frame_budget_ms);
   EXPECT_EQ(s.render.vsync, r0.vsync);
@@ -258,6 +259,7 @@ TEST(Scenario, ErrorsNameTheirKey) {
       {"empty method", doc(R"("render": {"method": ""})"), {"render.method", "non-empty"}},
       {"colour out of range", doc(R"("render": {"sky_zenith_rgb": [0.1, 1.5, 0.2]})"), {"render.sky_zenith_rgb[1]", "[0, 1]"}},
       {"colour with 2 numbers", doc(R"("render": {"sky_horizon_rgb": [0.1, 0.2]})"), {"render.sky_horizon_rgb", "3 numbers"}},
+      {"deferred shading as a string", doc(R"("render": {"deferred_shading": "yes"})"), {"render.deferred_shading", "true or false"}},
       {"zero sun", doc(R"("render": {"sun_direction": [0, 0, 0]})"), {"render.sun_direction", "non-zero"}},
       {"vsync not bool", doc(R"("render": {"vsync": 1})"), {"render.vsync", "true or false"}},
       {"unknown vertical datum", doc("", R"({"file": "x.tif", "vertical_datum": "navd88"})"), {"terrain.vertical_datum", "navd88"}},

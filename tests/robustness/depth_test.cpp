@@ -30,6 +30,8 @@ TwoSurfaces render_pair(double separation_m, bool lower_first, const Camera& cam
   overhead.sun_direction = {0.0f, 0.0f, 1.0f};  // flat ground fully lit: bright
   grazing.sun_direction = {1.0f, 0.0f, 0.02f};  // flat ground barely lit: dark
   overhead.fog_visibility_m = grazing.fog_visibility_m = 0.0;
+  // The second surface is drawn outside a FrameRenderer, so it is shaded where it is drawn.
+  overhead.deferred_shading = grazing.deferred_shading = false;
   const auto lower_hf = robustness::flat_terrain(129, 100.0, 0.0f);
   const auto upper_hf = robustness::flat_terrain(129, 100.0, float(separation_m));
   robustness::Rig rig(lower_first ? lower_hf : upper_hf, "reference", kW, kH, lower_first ? grazing : overhead);

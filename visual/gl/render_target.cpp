@@ -65,8 +65,37 @@ RenderTarget::RenderTarget(int width, int height, GLenum color_format, int sampl
 }
 
 void RenderTarget::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_ ? draw_fbo_.id() : fbo_.id());
+  const GLuint fbo = draw_fbo_ ? draw_fbo_.id() : fbo_.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  if (surface_) {
+    const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(fbo, 3, all);
+  }
   glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::bind_color_only() const {
+  const GLuint fbo = draw_fbo_ ? draw_fbo_.id() : fbo_.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glNamedFramebufferDrawBuffer(fbo, GL_COLOR_ATTACHMENT0);
+  glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::use_surface_targets() const {
+  if (surface_) return;
+  if (samples_ > 1) throw GlError("deferred shading needs a single-sampled frame (render.deferred_shading with msaa)");
+  const GLuint fbo = draw_fbo_ ? draw_fbo_.id() : fbo_.id();
+  surface_ = create_texture(GL_TEXTURE_2D);
+  footprint_ = create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(surface_.id(), 1, GL_RGBA32F, width_, height_);
+  glTextureStorage2D(footprint_.id(), 1, GL_RGBA32F, width_, height_);
+  for (GLuint t : {surface_.id(), footprint_.id()}) {
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, surface_.id(), 0);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, footprint_.id(), 0);
+  check_complete(fbo, width_, height_, 1);
 }
 
 void RenderTarget::bind_output() const {

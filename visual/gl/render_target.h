@@ -12,6 +12,13 @@
 //   (drawn_color_texture) and writes the picture (bind_output).
 // Everything that reads the frame afterwards (capture, present, image error)
 // reads the picture: fbo(), color_texture(), depth_texture().
+//
+// Deferred shading (single-sampled only) adds two surface targets the
+// terrain passes write beside the colour (attachments 1 and 2: each pixel's
+// surface coordinate and distance, RGBA32F, and the coordinate's screen
+// derivatives, RGBA32F: the shading's inputs exactly, so the picture is
+// the same as shading in the terrain passes; shaders/shade_deferred.frag),
+// made on first use.
 
 #include <epoxy/gl.h>
 
@@ -51,6 +58,16 @@ class RenderTarget {
   // their own texture when post-filtered, else color_texture().
   GLuint drawn_color_texture() const { return draw_color_ ? draw_color_.id() : color_.id(); }
 
+  // Deferred shading: makes the surface targets (once; throws GlError when
+  // multisampled) and from now on bind() draws into them too.
+  void use_surface_targets() const;
+  bool has_surface_targets() const { return bool(surface_); }
+  GLuint surface_texture() const { return surface_.id(); }
+  GLuint footprint_texture() const { return footprint_.id(); }
+  // Binds the framebuffer the passes draw into with the colour alone as
+  // output, for the pass that reads the surface targets.
+  void bind_color_only() const;
+
   // Read back (after resolve()), top row first (image order). RGBA8 and float depth.
   std::vector<std::uint8_t> read_rgba() const;
   std::vector<float> read_depth() const;
@@ -62,6 +79,8 @@ class RenderTarget {
   Texture color_, depth_;
   Framebuffer draw_fbo_;  // multisampled or post-filtered only
   Texture draw_color_, draw_depth_;  // draw_depth_: multisampled only (post-filtered shares depth_)
+  // Made on first use by a frame that asks for them (use_surface_targets).
+  mutable Texture surface_, footprint_;
 };
 
 // The largest sample count the context offers (GL_MAX_SAMPLES).

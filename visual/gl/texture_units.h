@@ -15,6 +15,8 @@ enum class TextureUnit : int {
   kImageryWindow = 6,   // full-resolution imagery around Level1
   kGroundDetail = 7,    // the ground-detail noise
   kFrameColor = 8,      // a full-screen pass's source: the drawn frame (post filter, coverage count)
+  kSurface = 9,         // deferred shading: each pixel's surface coordinate and distance
+  kFootprint = 10,      // deferred shading: the coordinate's screen derivatives
 };
 
 constexpr int unit(TextureUnit u) { return static_cast<int>(u); }

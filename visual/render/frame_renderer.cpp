@@ -11,10 +11,11 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
-// The work counters' passes: the method's, then the sky and the
-// anti-aliasing post pass (0 where the frame has none).
+// The work counters' passes: the method's, deferred shading's, the sky and
+// the anti-aliasing post pass (0 where the frame has none).
 std::vector<std::string> pass_names_of(const TerrainMethod& method) {
   auto names = method.pass_names();
+  names.push_back("shade");
   names.push_back("sky");
   names.push_back("aa");
   return names;
@@ -24,6 +25,7 @@ std::vector<std::string> pass_names_of(const TerrainMethod& method) {
 FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir)
     : scene_(scene),
       method_(&method),
+      shader_dir_(shader_dir),
       sky_(shader_dir),
       post_filter_(shader_dir),
       recorder_(pass_names_of(method)) {
@@ -59,6 +61,8 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.timings.lod_ms = ms_since(selection.lod_start);
 
   auto t0 = Clock::now();
+  const bool deferred = scene_.deferred_shading();
+  if (deferred) target.use_surface_targets();
   target.bind();
   // An eye under the surface sees the terrain's undersides: culled only while it is above.
   gl::begin_frame(back_face_culling_ && terrain::back_faces_hidden(scene_.heightfield(), camera.position));
@@ -67,6 +71,13 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.method = method_->draw(camera, target);
   recorder_.end();
   if (wireframe_) gl::set_wireframe(false);
+  const bool drew_terrain = !r.method.passes.empty();  // a sky-only view runs no terrain pass
+  if (deferred && drew_terrain) {
+    if (!deferred_shade_program_.id())
+      deferred_shade_program_ = gl::ShaderProgram(shader_dir_, "fullscreen.vert", scene_.deferred_shade_stages());
+    scene_.bind_common(deferred_shade_program_, camera, method_->window_set());
+    deferred_shade_.run(target, deferred_shade_program_, recorder_);
+  }
   gl::finish();
   r.timings.terrain_ms = ms_since(t0);
 
@@ -95,6 +106,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.total.draw_calls = gl::work_tally().draw_calls - at_start.draw_calls;
   r.total.bytes_uploaded = gl::work_tally().bytes_uploaded - at_start.bytes_uploaded;
   if (!r.method.passes.empty()) r.method.passes += "+";
+  if (deferred && drew_terrain) r.method.passes += "shade+";
   r.method.passes += "sky";
   if (target.post_pass()) r.method.passes += "+aa";
   return r;

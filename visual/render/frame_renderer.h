@@ -4,11 +4,14 @@
 // move); the scene's owner carries that out (session/view_step.h) and then
 // draw() runs the method's terrain passes, the sky into whatever the terrain
 // left uncovered, and the anti-aliasing resolve (multisampled) or post pass
-// (post-filtered). The renderer itself never changes the scene. Each stage is timed on the wall clock and closed with gl::finish (GL timer queries are not real GPU
+// (post-filtered). With deferred shading the terrain passes store each
+// pixel's surface and one pass shades them after the method's passes (part
+// of the terrain stage). The renderer itself never changes the scene. Each stage is timed on the wall clock and closed with gl::finish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
 
 #include <chrono>
 
+#include "gl/deferred_shade_pass.h"
 #include "gl/post_filter_pass.h"
 #include "gl/render_target.h"
 #include "gl/sky_pass.h"
@@ -66,7 +69,11 @@ class FrameRenderer {
  private:
   const TerrainScene& scene_;
   TerrainMethod* method_;
+  std::string shader_dir_;
   gl::SkyPass sky_;
+  // Deferred shading (scene.deferred_shading()): its program is made on first use.
+  gl::DeferredShadePass deferred_shade_;
+  gl::ShaderProgram deferred_shade_program_;
   gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;
   bool wireframe_ = false;

@@ -93,6 +93,10 @@ class TerrainMethod {
     (void)j;
     return std::nullopt;
   }
+  // The scene's window set (TerrainScene::claim_windows) the method's
+  // programs read heights and imagery through: the deferred shading pass
+  // reads through the same (-1: none).
+  virtual int window_set() const { return -1; }
   // FrameRenderer's pass recorder; a method with several passes opens each
   // with begin_pass() (no-op without a recorder).
   void set_pass_recorder(gl::PassRecorder* recorder) { passes_ = recorder; }

@@ -93,9 +93,15 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
 
 std::vector<std::string> TerrainScene::shading_stages(const std::vector<std::string>& own) const {
   std::vector<std::string> stages = {"terrain_shading.frag",
-                                     shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag"};
+                                     shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
+                                     shading_.deferred_shading ? "shade_deferred.frag" : "shade_forward.frag"};
   stages.insert(stages.end(), own.begin(), own.end());
   return stages;
+}
+
+std::vector<std::string> TerrainScene::deferred_shade_stages() const {
+  return {"terrain_shading.frag", shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
+          "deferred_shade.frag"};
 }
 
 void TerrainScene::set_ground_detail(bool on) {

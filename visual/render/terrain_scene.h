@@ -79,7 +79,15 @@ class TerrainScene {
   // (ground_detail.frag / ground_plain.frag: a CPU rasterizer runs both sides
   // of a branch, so what is off is not linked at all), then `own` (the
   // method's main and helpers).
+  // With deferred shading the stages store what the colour is a function of
+  // (shade_deferred.frag) instead of computing it (shade_forward.frag).
   std::vector<std::string> shading_stages(const std::vector<std::string>& own) const;
+  // The fragment stages of the deferred shading pass (deferred_shade.frag).
+  std::vector<std::string> deferred_shade_stages() const;
+  // Whether the terrain programs made from now on shade deferred
+  // (shading().deferred_shading; frames then need a single-sampled target).
+  bool deferred_shading() const { return shading_.deferred_shading; }
+  void set_deferred_shading(bool on) { shading_.deferred_shading = on; }
   // Ground detail for the programs made from now on (its texture made on first use).
   void set_ground_detail(bool on);
   // The light and sky (environment/sky_light.h) every terrain program and the

@@ -37,6 +37,7 @@ class TwoLevelMethod final : public TerrainMethod {
   std::string name() const override { return "twolevel"; }
   std::vector<std::string> column_names() const override;
   std::vector<std::string> pass_names() const override;
+  int window_set() const override { return windows_; }
   lod::SceneRequests update(const Camera& camera) override;
   void set_viewport(int width_px, int height_px) override { viewport_ = {width_px, height_px}; }
   MethodFrameStats draw(const Camera& camera, const gl::RenderTarget& target) override;

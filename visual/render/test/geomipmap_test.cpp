@@ -18,7 +18,7 @@ class GeoMipMapTest : public lod_views::MethodFramesTest<GeoMipMapMethod> {};
 
 TEST_F(GeoMipMapTest, NoHolesAgainstTheReference) {
   expect_every_view_without_holes(1.0, "geomipmap", [](const std::string&, const Frame& f) {
-    EXPECT_EQ(f.stats.passes, "terrain+sky");
+    EXPECT_EQ(f.stats.passes, "terrain+shade+sky");
   });
 }
 

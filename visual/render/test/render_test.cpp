@@ -120,9 +120,10 @@ TEST(DefaultScenario, EveryFrameOfTheRunIsLogged) {
     EXPECT_EQ(row[0].name, "frame");
     EXPECT_EQ(row[0].text, std::to_string(k));
     EXPECT_GT(runner.channels().front().last.method.triangles, 0);
-    // (+aa: the post-filter pass, when the frame is post-filtered)
+    // (+shade: deferred shading, the default; +aa: the post-filter pass,
+    // when the frame is post-filtered)
     EXPECT_EQ(runner.channels().front().last.method.passes,
-              runner.channels().front().target->post_pass() ? "terrain+sky+aa" : "terrain+sky");
+              runner.channels().front().target->post_pass() ? "terrain+shade+sky+aa" : "terrain+sky");
   }
 }
 
