@@ -2,7 +2,7 @@
 // Terrain shading shared by every LOD method. The colour of a pixel is a
 // function of its DEM texture coordinate (sample space), the coordinate's
 // screen derivatives (texture filtering) and its distance only: per-pixel
-// normal and height from the full-resolution height texture, a height and
+// normal (central differences) and height at full resolution, a height and
 // slope colour ramp (or an imagery texture), one directional light, fog. So
 // methods differ only in where each pixel's coordinate lands, and the colour
 // can be computed in the terrain pass (shade_forward.frag) or from those
@@ -88,11 +88,13 @@ vec3 ramp(float h01, float slope) {
 // The surface colour before light: ground_plain.frag or ground_detail.frag
 // (render/terrain_scene.h, TerrainScene::shading_stages).
 vec3 surface_albedo(vec2 s, vec2 s_dx, vec2 s_dy, float h01, float slope);
+// (h(s + x) - h(s - x), h(s + y) - h(s - y)) of the bilinear surface:
+// height_differences_texture.frag or height_differences_heights.frag.
+vec2 height_differences(vec2 s);
 
 vec3 shade_at(vec2 s, vec2 s_dx, vec2 s_dy, float dist) {
-  float hl = height_at(s - vec2(1, 0)), hr = height_at(s + vec2(1, 0));
-  float hd = height_at(s - vec2(0, 1)), hu = height_at(s + vec2(0, 1));
-  vec3 n = normalize(vec3(-(hr - hl) / (2.0 * u_spacing.x), -(hu - hd) / (2.0 * u_spacing.y), 1.0));
+  vec2 d = height_differences(s);
+  vec3 n = normalize(vec3(-d.x / (2.0 * u_spacing.x), -d.y / (2.0 * u_spacing.y), 1.0));
   float slope = 1.0 - n.z;
   float span = max(u_height_range.y - u_height_range.x, 1.0);
   float h01 = clamp((height_at(s) - u_height_range.x) / span, 0.0, 1.0);

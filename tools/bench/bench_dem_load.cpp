@@ -1,5 +1,5 @@
-// Benchmark: time to load a DEM from disk (GDAL) and to upload its R32F
-// height texture (headless GL). Prints figures; asserts nothing.
+// Benchmark: time to load a DEM from disk (GDAL) and to upload its scene
+// textures (headless GL: R32F heights, their central differences, ground detail). Prints figures; asserts nothing.
 //   build/bin/bench_dem_load [FILE] [--repeat N]
 // FILE defaults to $IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif.
 #include <algorithm>
@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
     std::printf("renderer: %s | %s\n", ctx->gl_renderer().c_str(), ctx->gl_version().c_str());
     std::printf("load (GDAL read + flip + stats), %d runs: median %.1f ms, min %.1f ms, max %.1f ms\n", repeat,
                 l.median, *std::min_element(load_ms.begin(), load_ms.end()), l.max);
-    std::printf("height texture upload R32F (glTextureSubImage2D + glFinish), %d runs: median %.1f ms, max %.1f ms\n",
+    std::printf("scene textures upload (R32F heights, RG16F central differences, ground detail; + glFinish), %d runs: "
+                "median %.1f ms, max %.1f ms\n",
                 repeat, u.median, u.max);
     return 0;
   });

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 namespace ig::gl {
 
@@ -16,6 +18,29 @@ Texture upload_height_texture(int width, int height, const float* heights) {
   glTextureStorage2D(t.id(), 1, GL_R32F, width, height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(t.id(), 0, 0, 0, width, height, GL_RED, GL_FLOAT, heights);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+Texture upload_height_differences_texture(int width, int height, const float* heights) {
+  Texture t = create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, GL_RG16F, width, height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  // A row at a time: no copy of the whole DEM.
+  std::vector<float> row(2 * std::size_t(width));
+  for (int j = 0; j < height; ++j) {
+    const float* up = heights + std::size_t(std::min(j + 1, height - 1)) * width;
+    const float* down = heights + std::size_t(std::max(j - 1, 0)) * width;
+    const float* here = heights + std::size_t(j) * width;
+    for (int i = 0; i < width; ++i) {
+      row[2 * i] = here[std::min(i + 1, width - 1)] - here[std::max(i - 1, 0)];
+      row[2 * i + 1] = up[i] - down[i];
+    }
+    glTextureSubImage2D(t.id(), 0, 0, j, width, 1, GL_RG, GL_FLOAT, row.data());
+  }
   glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

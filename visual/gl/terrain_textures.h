@@ -12,6 +12,11 @@ namespace ig::gl {
 int max_texture_size();
 // width x height float heights, row-major.
 Texture upload_height_texture(int width, int height, const float* heights);
+// The central differences of those heights, (h[i+1] - h[i-1], h[j+1] - h[j-1])
+// per sample (edges clamped), RG16F, linear, clamped. Differences commute
+// with bilinear filtering, so one filtered read gives what four filtered
+// height reads a sample apart give (shaders/height_differences_texture.frag).
+Texture upload_height_differences_texture(int width, int height, const float* heights);
 // 8-bit colour (rgba: 4 channels, else 3), tightly packed, mipmapped
 // (trilinear); repeat: wraps (a tiling texture), else clamps to the edge.
 Texture upload_colour_texture(int width, int height, const unsigned char* pixels, bool rgba, bool repeat);

@@ -17,6 +17,7 @@ enum class TextureUnit : int {
   kFrameColor = 8,      // a full-screen pass's source: the drawn frame (post filter, coverage count)
   kSurface = 9,         // deferred shading: each pixel's surface coordinate and distance
   kFootprint = 10,      // deferred shading: the coordinate's screen derivatives
+  kHeightDifferences = 11,  // each sample's central differences of height (the shading's normal)
 };
 
 constexpr int unit(TextureUnit u) { return static_cast<int>(u); }

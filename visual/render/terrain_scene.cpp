@@ -58,6 +58,8 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   }
   const terrain::Heightfield& tex = texture_heightfield();
   height_tex_ = gl::upload_height_texture(tex.width, tex.height, tex.heights.data());
+  if (!overview_ && (long long)tex.width * tex.height <= kMaxHeightDifferencesSamples)
+    height_differences_tex_ = gl::upload_height_differences_texture(tex.width, tex.height, tex.heights.data());
   if (shading_.ground_detail) detail_tex_ = upload_detail_texture();
   gl::finish();  // so upload_ms is the real transfer, not just the enqueue
   upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -91,17 +93,22 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   }
 }
 
+std::vector<std::string> TerrainScene::shading_library() const {
+  return {"terrain_shading.frag", shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
+          height_differences_texture() ? "height_differences_texture.frag" : "height_differences_heights.frag"};
+}
+
 std::vector<std::string> TerrainScene::shading_stages(const std::vector<std::string>& own) const {
-  std::vector<std::string> stages = {"terrain_shading.frag",
-                                     shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
-                                     shading_.deferred_shading ? "shade_deferred.frag" : "shade_forward.frag"};
+  std::vector<std::string> stages = shading_library();
+  stages.push_back(shading_.deferred_shading ? "shade_deferred.frag" : "shade_forward.frag");
   stages.insert(stages.end(), own.begin(), own.end());
   return stages;
 }
 
 std::vector<std::string> TerrainScene::deferred_shade_stages() const {
-  return {"terrain_shading.frag", shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
-          "deferred_shade.frag"};
+  std::vector<std::string> stages = shading_library();
+  stages.push_back("deferred_shade.frag");
+  return stages;
 }
 
 void TerrainScene::set_ground_detail(bool on) {
@@ -122,6 +129,10 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   using gl::TextureUnit;
   gl::bind_texture(TextureUnit::kHeight, height_tex_);
   p.set("u_height", gl::unit(TextureUnit::kHeight));
+  if (height_differences_tex_ && p.location("u_height_differences") >= 0) {
+    gl::bind_texture(TextureUnit::kHeightDifferences, height_differences_tex_);
+    p.set("u_height_differences", gl::unit(TextureUnit::kHeightDifferences));
+  }
   p.set("u_has_imagery", has_imagery() ? 1 : 0);
   if (has_imagery()) {
     gl::bind_texture(TextureUnit::kImagery, imagery_tex_);

@@ -53,6 +53,10 @@ class TerrainScene {
   // refilling its own evicted tiles thrashes), but never below this: Level1's
   // largest square (1025) and its band.
   static constexpr int kMinPagedHeightWindow = 2048;
+  // The largest DEM (samples) that gets a texture of its central
+  // differences (height_differences_texture(): 4 bytes a sample, 256 MiB
+  // at this size); larger ones read four heights for the normal.
+  static constexpr long long kMaxHeightDifferencesSamples = 8193LL * 8193LL;
 
   // Uploads the height texture (and imagery, only when given). Throws
   // std::invalid_argument for a heightfield with fewer than 2 x 2 samples
@@ -84,6 +88,14 @@ class TerrainScene {
   std::vector<std::string> shading_stages(const std::vector<std::string>& own) const;
   // The fragment stages of the deferred shading pass (deferred_shade.frag).
   std::vector<std::string> deferred_shade_stages() const;
+  // Whether the shading programs made from now on take the normal from the
+  // DEM's central differences in one read (one texture of them, made with
+  // the scene when the DEM fits one texture and kMaxHeightDifferencesSamples)
+  // or from four height reads (always with an overview). The picture is the same within
+  // the differences' half-float rounding; on by default where possible, off
+  // for tests that compare the two.
+  bool height_differences_texture() const { return use_height_differences_ && bool(height_differences_tex_); }
+  void set_height_differences_texture(bool on) { use_height_differences_ = on; }
   // Whether the terrain programs made from now on shade deferred
   // (shading().deferred_shading; frames then need a single-sampled target).
   bool deferred_shading() const { return shading_.deferred_shading; }
@@ -191,6 +203,9 @@ class TerrainScene {
   void bind_common(const gl::ShaderProgram& program, const Camera& camera, int windows = -1) const;
 
  private:
+  // The fragment stages every shading program starts with.
+  std::vector<std::string> shading_library() const;
+
   const terrain::Heightfield& heightfield_;
   ShadingParams shading_;
   environment::SkyLight sky_light_;
@@ -201,6 +216,8 @@ class TerrainScene {
   std::unique_ptr<terrain::Heightfield> overview_;  // only beyond the texture limit
   gl::Texture imagery_tex_;  // empty without imagery
   gl::Texture detail_tex_;   // ground detail (terrain/detail_noise.h); empty when shading_.ground_detail is off
+  gl::Texture height_differences_tex_;  // see height_differences_texture(); empty with an overview
+  bool use_height_differences_ = true;
   double upload_ms_ = 0.0;
   std::int64_t imagery_uncovered_ = 0;
   // Imagery beyond the limit: full-resolution pixels per overview pixel, and

@@ -1,0 +1,10 @@
+#version 450 core
+// The shading's normal from four filtered height reads a sample apart
+// (terrain_shading.frag height_at: window, overview or whole DEM), for
+// terrain with an overview, whose heights are not all in one texture.
+float height_at(vec2 s);  // terrain_shading.frag
+
+vec2 height_differences(vec2 s) {
+  return vec2(height_at(s + vec2(1, 0)) - height_at(s - vec2(1, 0)),
+              height_at(s + vec2(0, 1)) - height_at(s - vec2(0, 1)));
+}
