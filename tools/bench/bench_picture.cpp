@@ -21,9 +21,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "gl/render_target.h"
@@ -65,15 +67,27 @@ void run(const std::string& file, int w, int h, int frames) {
   o.headless = true;
   ig::session::ScenarioRunner runner(std::move(s), o);
   auto& ch = runner.channels().front();
-  // The channel's method links the detail stage (the scenario's default); a
-  // second, built with the scene's detail off, links the plain one. Both
-  // draw with the same scene and cameras.
+  // One method and renderer per shading (ground detail or plain; deferred
+  // for single-sampled targets, in the terrain pass for multisampled ones),
+  // each made under its scene settings; all draw with the same scene and cameras.
   auto& scene = runner.scene();
-  scene.set_ground_detail(false);
-  const auto plain_method = ig::render::make_method(runner.scenario().render.method, scene, runner.shader_dir(),
-                                                    runner.scenario().render.method_options());
+  struct Shading {
+    std::unique_ptr<ig::render::TerrainMethod> method;
+    std::unique_ptr<ig::render::FrameRenderer> renderer;
+  };
+  std::map<std::pair<bool, bool>, Shading> shadings;  // (detail, deferred)
+  const bool deferred_default = scene.deferred_shading();
+  for (bool detail : {false, true})
+    for (bool deferred : {false, true}) {
+      scene.set_ground_detail(detail);
+      scene.set_deferred_shading(deferred);
+      Shading& sh = shadings[{detail, deferred}];
+      sh.method = ig::render::make_method(runner.scenario().render.method, scene, runner.shader_dir(),
+                                          runner.scenario().render.method_options());
+      sh.renderer = std::make_unique<ig::render::FrameRenderer>(scene, *sh.method, runner.shader_dir());
+    }
   scene.set_ground_detail(true);
-  ig::render::FrameRenderer plain_renderer(scene, *plain_method, runner.shader_dir());
+  scene.set_deferred_shading(deferred_default);
   std::vector<Variant> variants;
   for (const auto& [name, detail, aa] : {std::tuple{"plain", false, "off"}, std::tuple{"detail", true, "off"},
                                          std::tuple{"fxaa", false, "fxaa"}, std::tuple{"msaa 4x", false, "msaa"},
@@ -92,7 +106,7 @@ void run(const std::string& file, int w, int h, int frames) {
     const ig::render::Camera camera = runner.camera_for(pose, ch);
     for (std::size_t r = 0; r < variants.size(); ++r) {
       Variant& v = variants[(r + i) % variants.size()];  // rotated, so no variant always goes first
-      ig::render::FrameRenderer& renderer = v.detail ? *ch.renderer : plain_renderer;
+      ig::render::FrameRenderer& renderer = *shadings.at({v.detail, v.target->samples() == 1}).renderer;
       const double c0 = cpu_ms();
       const auto t0 = Clock::now();
       const auto result = ig::session::render_view(scene, renderer, camera, *v.target);

@@ -30,6 +30,16 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
       post_filter_(shader_dir),
       recorder_(pass_names_of(method)) {
   method_->set_pass_recorder(&recorder_);
+  take_shading_settings();
+}
+
+void FrameRenderer::take_shading_settings() {
+  deferred_ = scene_.deferred_shading();
+  const auto stages = deferred_ ? scene_.deferred_shade_stages() : std::vector<std::string>{};
+  if (stages == deferred_shade_stages_) return;  // e.g. a method switch: the same program
+  deferred_shade_stages_ = stages;
+  deferred_shade_program_ =
+      deferred_ ? gl::ShaderProgram(shader_dir_, "fullscreen.vert", stages) : gl::ShaderProgram();
 }
 
 FrameRenderer::~FrameRenderer() { method_->set_pass_recorder(nullptr); }
@@ -39,6 +49,7 @@ void FrameRenderer::set_method(TerrainMethod& method) {
   method_ = &method;
   if (auto names = pass_names_of(method); names != recorder_.pass_names()) recorder_.reset_passes(std::move(names));
   method_->set_pass_recorder(&recorder_);
+  take_shading_settings();
 }
 
 ViewSelection FrameRenderer::select(const Camera& world_camera, const gl::RenderTarget& target) {
@@ -61,7 +72,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.timings.lod_ms = ms_since(selection.lod_start);
 
   auto t0 = Clock::now();
-  const bool deferred = scene_.deferred_shading();
+  const bool deferred = deferred_;
   if (deferred) target.use_surface_targets();
   target.bind();
   // An eye under the surface sees the terrain's undersides: culled only while it is above.
@@ -73,8 +84,6 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   if (wireframe_) gl::set_wireframe(false);
   const bool drew_terrain = !r.method.passes.empty();  // a sky-only view runs no terrain pass
   if (deferred && drew_terrain) {
-    if (!deferred_shade_program_.id())
-      deferred_shade_program_ = gl::ShaderProgram(shader_dir_, "fullscreen.vert", scene_.deferred_shade_stages());
     scene_.bind_common(deferred_shade_program_, camera, method_->window_set());
     deferred_shade_.run(target, deferred_shade_program_, recorder_);
   }

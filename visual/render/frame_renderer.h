@@ -49,6 +49,9 @@ struct ViewSelection {
 
 class FrameRenderer {
  public:
+  // Draws as the scene's shading settings are now (deferred or not, and
+  // the stages of its deferred shading pass), which must be those `method`
+  // was made with: make both under the same settings.
   FrameRenderer(const TerrainScene& scene, TerrainMethod& method, const std::string& shader_dir);
   ~FrameRenderer();
   FrameRenderer(const FrameRenderer&) = delete;
@@ -63,17 +66,22 @@ class FrameRenderer {
   // off draws every face, as for an eye under the surface.
   void set_back_face_culling(bool on) { back_face_culling_ = on; }
   // Draw with another method from the next frame on (a rebuild at a frame
-  // boundary): the sky program and the rest are kept, not recompiled.
+  // boundary): the sky program and the rest are kept, not recompiled; the
+  // shading settings are taken again, as the constructor takes them.
   void set_method(TerrainMethod& method);
+  bool deferred_shading() const { return deferred_; }
 
  private:
   const TerrainScene& scene_;
   TerrainMethod* method_;
   std::string shader_dir_;
   gl::SkyPass sky_;
-  // Deferred shading (scene.deferred_shading()): its program is made on first use.
+  // Deferred shading (scene.deferred_shading() when the method was set).
+  bool deferred_ = false;
   gl::DeferredShadePass deferred_shade_;
   gl::ShaderProgram deferred_shade_program_;
+  std::vector<std::string> deferred_shade_stages_;  // what the program was linked from
+  void take_shading_settings();
   gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;
   bool wireframe_ = false;
