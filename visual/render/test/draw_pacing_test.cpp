@@ -112,10 +112,13 @@ TEST(DrawPacing, TheDriverHoldsNoMoreAfterAHeavierFrame) {
   std::printf("heap in use: %.1f MB steady; paced %+.1f MB after 2.1 M triangles, %+.1f MB more after 8.4 M; "
               "unpaced %+.1f MB more after 8.4 M\n",
               steady, after_heavy - steady, after_heavier - after_heavy, unpaced - after_heavier);
-  // Paced, what the driver holds after a heavy frame (two chunks' bins at
-  // most) does not grow with the frame's weight.
-  EXPECT_LT(after_heavier - after_heavy, 1.0);
+  // Paced, what the driver holds after a heavy frame is two chunks' bins at
+  // most, whatever the frame's weight. Which frame first has two chunks in
+  // flight depends on the rasterizer threads' timing (on a loaded machine
+  // the 2.1 M-triangle frame held +0.0 MB and the 8.4 M one +13.2 MB; idle,
+  // the other way round), so both are held to the bound, not to each other.
   EXPECT_LT(after_heavy - steady, 16.0);
+  EXPECT_LT(after_heavier - steady, 16.0);
 }
 
 }  // namespace
