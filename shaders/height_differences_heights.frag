@@ -1,7 +1,9 @@
 #version 450 core
 // The shading's normal from four filtered height reads a sample apart
 // (terrain_shading.frag height_at: window, overview or whole DEM), for
-// terrain with an overview, whose heights are not all in one texture.
+// terrain with an overview, whose heights are not all in one texture, and
+// DEMs too large for a texture of differences
+// (TerrainScene::kMaxHeightDifferencesSamples).
 float height_at(vec2 s);  // terrain_shading.frag
 
 vec2 height_differences(vec2 s) {

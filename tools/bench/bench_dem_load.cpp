@@ -1,5 +1,6 @@
 // Benchmark: time to load a DEM from disk (GDAL) and to upload its scene
-// textures (headless GL: R32F heights, their central differences, ground detail). Prints figures; asserts nothing.
+// textures (headless GL: R32F heights, their central differences, ground
+// detail). Prints figures; asserts nothing.
 //   build/bin/bench_dem_load [FILE] [--repeat N]
 // FILE defaults to $IG_DEM_DIR/sierra_nevada_3arcsec_4097.tif.
 #include <algorithm>

@@ -65,7 +65,7 @@ RenderTarget::RenderTarget(int width, int height, GLenum color_format, int sampl
 }
 
 void RenderTarget::bind() const {
-  const GLuint fbo = draw_fbo_ ? draw_fbo_.id() : fbo_.id();
+  const GLuint fbo = drawing_fbo();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   if (surface_) {
     const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
@@ -75,7 +75,7 @@ void RenderTarget::bind() const {
 }
 
 void RenderTarget::bind_color_only() const {
-  const GLuint fbo = draw_fbo_ ? draw_fbo_.id() : fbo_.id();
+  const GLuint fbo = drawing_fbo();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glNamedFramebufferDrawBuffer(fbo, GL_COLOR_ATTACHMENT0);
   glViewport(0, 0, width_, height_);
@@ -84,7 +84,7 @@ void RenderTarget::bind_color_only() const {
 void RenderTarget::use_surface_targets() const {
   if (surface_) return;
   if (samples_ > 1) throw GlError("deferred shading needs a single-sampled frame (render.deferred_shading with msaa)");
-  const GLuint fbo = draw_fbo_ ? draw_fbo_.id() : fbo_.id();
+  const GLuint fbo = drawing_fbo();
   surface_ = create_texture(GL_TEXTURE_2D);
   footprint_ = create_texture(GL_TEXTURE_2D);
   glTextureStorage2D(surface_.id(), 1, GL_RGBA32F, width_, height_);

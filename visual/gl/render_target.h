@@ -61,7 +61,6 @@ class RenderTarget {
   // Deferred shading: makes the surface targets (once; throws GlError when
   // multisampled) and from now on bind() draws into them too.
   void use_surface_targets() const;
-  bool has_surface_targets() const { return bool(surface_); }
   GLuint surface_texture() const { return surface_.id(); }
   GLuint footprint_texture() const { return footprint_.id(); }
   // Binds the framebuffer the passes draw into with the colour alone as
@@ -73,6 +72,9 @@ class RenderTarget {
   std::vector<float> read_depth() const;
 
  private:
+  // The framebuffer the passes draw into.
+  GLuint drawing_fbo() const { return draw_fbo_ ? draw_fbo_.id() : fbo_.id(); }
+
   int width_, height_;
   int samples_ = 1;
   Framebuffer fbo_;

@@ -72,8 +72,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.timings.lod_ms = ms_since(selection.lod_start);
 
   auto t0 = Clock::now();
-  const bool deferred = deferred_;
-  if (deferred) target.use_surface_targets();
+  if (deferred_) target.use_surface_targets();
   target.bind();
   // An eye under the surface sees the terrain's undersides: culled only while it is above.
   gl::begin_frame(back_face_culling_ && terrain::back_faces_hidden(scene_.heightfield(), camera.position));
@@ -83,7 +82,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   recorder_.end();
   if (wireframe_) gl::set_wireframe(false);
   const bool drew_terrain = !r.method.passes.empty();  // a sky-only view runs no terrain pass
-  if (deferred && drew_terrain) {
+  if (deferred_ && drew_terrain) {
     scene_.bind_common(deferred_shade_program_, camera, method_->window_set());
     deferred_shade_.run(target, deferred_shade_program_, recorder_);
   }
@@ -115,7 +114,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.total.draw_calls = gl::work_tally().draw_calls - at_start.draw_calls;
   r.total.bytes_uploaded = gl::work_tally().bytes_uploaded - at_start.bytes_uploaded;
   if (!r.method.passes.empty()) r.method.passes += "+";
-  if (deferred && drew_terrain) r.method.passes += "shade+";
+  if (deferred_ && drew_terrain) r.method.passes += "shade+";
   r.method.passes += "sky";
   if (target.post_pass()) r.method.passes += "+aa";
   return r;

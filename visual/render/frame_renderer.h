@@ -69,7 +69,6 @@ class FrameRenderer {
   // boundary): the sky program and the rest are kept, not recompiled; the
   // shading settings are taken again, as the constructor takes them.
   void set_method(TerrainMethod& method);
-  bool deferred_shading() const { return deferred_; }
 
  private:
   const TerrainScene& scene_;
