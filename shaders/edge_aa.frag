@@ -7,12 +7,12 @@
 uniform sampler2D u_frame;  // linear filtering, clamp to edge
 layout(location = 0) out vec4 o_color;
 
-float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
+float luma(vec3 c);
+float luma_px(ivec2 p);
+vec4 neighbour_lumas(ivec2 px);
+bool is_edge(float m, vec4 nsew);
 float luma_at(vec2 uv) { return luma(textureLod(u_frame, uv, 0.0).rgb); }
-float luma_px(ivec2 p) { return luma(texelFetch(u_frame, p, 0).rgb); }  // clamped by the caller
 
-const float kEdgeMin = 1.0 / 16.0;  // ignore edges fainter than this (absolute): the ground's grain stays sharp
-const float kEdgeRel = 1.0 / 8.0;   // ... or below this share of the local max
 const float kSubpixel = 0.75;       // weight of the low-pass term
 // The walk along an edge: steps in pixels, the last ones long (as in
 // Lottes's quality presets), 20.5 px in all. Eight shorter steps (21.5 px)
@@ -29,14 +29,13 @@ void main() {
   ivec2 lo_px = max(px - 1, ivec2(0)), hi_px = min(px + 1, size - 1);
   vec4 centre = texelFetch(u_frame, px, 0);
   float m = luma(centre.rgb);
-  float n = luma_px(ivec2(px.x, hi_px.y)), s = luma_px(ivec2(px.x, lo_px.y));
-  float e = luma_px(ivec2(hi_px.x, px.y)), w = luma_px(ivec2(lo_px.x, px.y));
-  float lo = min(m, min(min(n, s), min(e, w))), hi = max(m, max(max(n, s), max(e, w)));
-  float range = hi - lo;
-  if (range < max(kEdgeMin, hi * kEdgeRel)) {
+  vec4 nsew = neighbour_lumas(px);
+  if (!is_edge(m, nsew)) {  // never taken after edge_mark.frag's mask; kept so the filter stands alone
     o_color = centre;
     return;
   }
+  float n = nsew.x, s = nsew.y, e = nsew.z, w = nsew.w;
+  float range = max(m, max(max(n, s), max(e, w))) - min(m, min(min(n, s), min(e, w)));
   float ne = luma_px(hi_px), sw = luma_px(lo_px);
   float nw = luma_px(ivec2(lo_px.x, hi_px.y)), se = luma_px(ivec2(hi_px.x, lo_px.y));
 

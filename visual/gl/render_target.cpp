@@ -103,6 +103,19 @@ void RenderTarget::bind_output() const {
   glViewport(0, 0, width_, height_);
 }
 
+void RenderTarget::bind_output_with_mask() const {
+  if (!masked_output_fbo_) {
+    masked_output_fbo_ = create_framebuffer();
+    output_mask_ = create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(output_mask_.id(), 1, GL_DEPTH_COMPONENT16, width_, height_);
+    glNamedFramebufferTexture(masked_output_fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+    glNamedFramebufferTexture(masked_output_fbo_.id(), GL_DEPTH_ATTACHMENT, output_mask_.id(), 0);
+    check_complete(masked_output_fbo_.id(), width_, height_, 1);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, masked_output_fbo_.id());
+  glViewport(0, 0, width_, height_);
+}
+
 void RenderTarget::resolve() const {
   if (samples_ <= 1) return;
   // Colour: the samples' mean (a box filter over the pixel); depth cannot be

@@ -50,6 +50,10 @@ class RenderTarget {
   // Post-filtered: binds the picture's framebuffer (colour only) for the pass
   // that writes it.
   void bind_output() const;
+  // The same with a depth buffer of the output's own (made on first use; the
+  // frame's depth is left as drawn), which the pass may fill with a mask of
+  // the pixels to work on and test against.
+  void bind_output_with_mask() const;
   // The picture: the single-sampled framebuffer and its textures.
   GLuint fbo() const { return fbo_.id(); }
   GLuint color_texture() const { return color_.id(); }
@@ -83,6 +87,8 @@ class RenderTarget {
   Texture draw_color_, draw_depth_;  // draw_depth_: multisampled only (post-filtered shares depth_)
   // Made on first use by a frame that asks for them (use_surface_targets).
   mutable Texture surface_, footprint_;
+  mutable Framebuffer masked_output_fbo_;
+  mutable Texture output_mask_;
 };
 
 // The largest sample count the context offers (GL_MAX_SAMPLES).

@@ -69,6 +69,9 @@ class FrameRenderer {
   // boundary): the sky program and the rest are kept, not recompiled; the
   // shading settings are taken again, as the constructor takes them.
   void set_method(TerrainMethod& method);
+  // For tests: the post filter on every pixel in one draw instead of on the
+  // pixels its first draw marks (gl::PostFilterPass).
+  void set_post_filter_mask(bool on) { post_filter_.set_edge_mask(on); }
 
  private:
   const TerrainScene& scene_;

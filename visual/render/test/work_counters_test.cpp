@@ -57,11 +57,11 @@ TEST(WorkCounters, EveryMethodCountsItsWork) {
     std::printf("\n");
     ASSERT_GE(v.passes.size(), 2u);
     // The method's passes, then the sky and the anti-aliasing post pass
-    // (one draw when the frame is post-filtered, none otherwise).
+    // (two draws when the frame is post-filtered, none otherwise).
     const auto& sky = v.passes[v.passes.size() - 2];
     EXPECT_EQ(sky.name, "sky");
     EXPECT_EQ(v.passes.back().name, "aa");
-    EXPECT_EQ(v.passes.back().draw_calls, ch.target->post_pass() ? 1u : 0u) << method;
+    EXPECT_EQ(v.passes.back().draw_calls, ch.target->post_pass() ? 2u : 0u) << method;
     EXPECT_GT(v.total.vs_invocations, 0u) << method;
     EXPECT_GT(v.total.draw_calls, 1u) << method;  // terrain and sky at least
     EXPECT_GT(terrain_px, 0) << method;
@@ -119,8 +119,9 @@ TEST(WorkCounters, SkyPassesOnlyWhereNoTerrainIs) {
   }
 }
 
-// The post-filtered frame's edge pass: one full-screen triangle, every pixel
-// shaded once, after the sky.
+// The post-filtered frame's edge pass, after the sky: two full-screen
+// triangles, the first (copy and mark) shading every pixel once, the second
+// (the filter) passing the marked pixels alone.
 TEST(WorkCounters, PostFilterPassIsCounted) {
   auto scenario = ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json");
   scenario.render.antialiasing = "fxaa";
@@ -128,11 +129,15 @@ TEST(WorkCounters, PostFilterPassIsCounted) {
   runner.render_frame(0);
   const auto& v = runner.channels().front().last;
   ASSERT_EQ(v.passes.back().name, "aa");
-  EXPECT_EQ(v.passes.back().draw_calls, 1u);
-  EXPECT_EQ(v.passes.back().primitives, 1u);
-  // (llvmpipe counts a few helper invocations along the triangle's edge.)
+  EXPECT_EQ(v.passes.back().draw_calls, 2u);
+  EXPECT_EQ(v.passes.back().primitives, 2u);
+  // (llvmpipe counts a few helper invocations along the triangles' edges,
+  // and every rasterized fragment of the second, also those its depth test
+  // rejects.)
   EXPECT_GE(v.passes.back().fs_invocations, std::uint64_t(kW * kH));
-  EXPECT_LE(v.passes.back().fs_invocations, std::uint64_t(kW * kH * 11 / 10));
+  EXPECT_LE(v.passes.back().fs_invocations, std::uint64_t(2 * kW * kH * 11 / 10));
+  EXPECT_GE(v.passes.back().samples_passed, std::uint64_t(kW * kH));
+  EXPECT_LT(v.passes.back().samples_passed, std::uint64_t(2 * kW * kH));
   EXPECT_NE(v.method.passes.find("sky+aa"), std::string::npos) << v.method.passes;
   EXPECT_GT(v.timings.resolve_ms, 0.0);
 }
