@@ -13,7 +13,7 @@ uniform vec2 u_detail_phase[3];
 uniform vec2 u_spacing;
 uniform bool u_has_imagery;
 
-vec3 imagery_at(vec2 s, vec2 s_dx, vec2 s_dy);  // terrain_shading.frag
+vec3 imagery_at(vec2 s, vec2 s_dx, vec2 s_dy);  // imagery.frag or imagery_none.frag
 vec3 ramp(float h01, float slope);  // terrain_shading.frag
 
 // The detail texture at tile size k, filtered for this pixel's footprint

@@ -3,7 +3,7 @@
 // height and slope ramp, or the draped imagery.
 uniform bool u_has_imagery;
 
-vec3 imagery_at(vec2 s, vec2 s_dx, vec2 s_dy);            // terrain_shading.frag
+vec3 imagery_at(vec2 s, vec2 s_dx, vec2 s_dy);  // imagery.frag or imagery_none.frag
 vec3 ramp(float h01, float slope);  // terrain_shading.frag
 
 vec3 surface_albedo(vec2 s, vec2 s_dx, vec2 s_dy, float h01, float slope) {

@@ -24,7 +24,7 @@ uniform ivec2 u_eye_sample;
 uniform vec3 u_eye_frac;            // eye - eye_sample * spacing (xy), eye height (z)
 uniform float u_earth_radius_m;
 
-float height_at(vec2 s);  // terrain_shading.frag
+float height_at(vec2 s);  // height_at_window.frag or height_at_whole.frag
 
 float view_distance(float depth) {  // reversed-Z depth -> distance along the view axis
   return u_near_far.x * u_near_far.y / (depth * (u_near_far.y - u_near_far.x) + u_near_far.x);

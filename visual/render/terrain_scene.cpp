@@ -94,8 +94,12 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
 }
 
 std::vector<std::string> TerrainScene::shading_library() const {
-  return {"terrain_shading.frag", shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
-          height_differences_texture() ? "height_differences_texture.frag" : "height_differences_heights.frag"};
+  const bool whole_heights = !overview_ && !windows_[0].height;
+  return {"terrain_shading.frag",
+          shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
+          height_differences_texture() ? "height_differences_texture.frag" : "height_differences_heights.frag",
+          whole_heights ? "height_at_whole.frag" : "height_at_window.frag",
+          has_imagery() ? "imagery.frag" : "imagery_none.frag"};
 }
 
 std::vector<std::string> TerrainScene::shading_stages(const std::vector<std::string>& own) const {

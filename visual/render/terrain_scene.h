@@ -80,9 +80,11 @@ class TerrainScene {
   void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
   // The fragment stages of a terrain program: the shared shading
   // (terrain_shading.frag), the surface colour with or without ground detail
-  // (ground_detail.frag / ground_plain.frag: a CPU rasterizer runs both sides
-  // of a branch, so what is off is not linked at all), then `own` (the
-  // method's main and helpers).
+  // (ground_detail.frag / ground_plain.frag), the heights through a window
+  // or from the whole DEM (height_at_window.frag / height_at_whole.frag),
+  // imagery or none (imagery.frag / imagery_none.frag), then `own` (the
+  // method's main and helpers). A CPU rasterizer runs both sides of a
+  // branch, also on a uniform, so what is off or absent is not linked at all.
   // With deferred shading the stages store what the colour is a function of
   // (shade_deferred.frag) instead of computing it (shade_forward.frag).
   std::vector<std::string> shading_stages(const std::vector<std::string>& own) const;
@@ -140,8 +142,9 @@ class TerrainScene {
   // one, reads outside the window get the overview's (bilinear between its
   // samples for shading). A method that draws near one point (the
   // two-level method: Level1 and its band) keeps the window on it with
-  // follow_window(), and reads through it (shaders/terrain_shading.frag
-  // height_at, shaders/terrain_grid.vert).
+  // follow_window(), and reads through it (shaders/height_at_window.frag,
+  // shaders/terrain_grid.vert). Call it before making the methods: their
+  // programs link the window's reads only if the scene has a window then.
   void enable_height_window(int size);
   // Each channel's view needs full resolution around its own Level1, so the
   // windows come in sets, one per method that draws through them (every
