@@ -6,7 +6,9 @@
 // ray meets the full-resolution surface in the band ring, found one of two ways:
 //   target: read from the band pass's RGBA16F target (the paper's pass);
 //   inline: by marching the ray against the height texture here, only for
-//           fragments whose ray window reaches the grown square (no extra pass).
+//           fragments whose ray window reaches the grown square (no extra pass);
+//           Level0 out of every window's reach is drawn with
+//           level0_no_band.frag instead (lod/band_ring.h).
 uniform bool u_band_valid;       // the band is drawn this frame
 uniform bool u_band_inline;      // inline (true) or target (false)
 uniform sampler2D u_band;        // target: rg = uv1 - centre, b = beta, a = mask
@@ -15,6 +17,7 @@ uniform vec4 u_band_rect;        // target: pixels (x0, y0, x1, y1) where it is 
 uniform vec2 u_level1_center;    // band coordinates are relative to this (samples)
 uniform vec2 u_near_far;
 uniform float u_band_tolerance_m;
+uniform float u_band_window_per_m;  // the depth window grows by this per metre of distance (lod/band_ring.h)
 // inline:
 uniform sampler2D u_beta_template;  // 256x256, beta over the grown square
 uniform float u_grown_half;         // half side of the grown square (samples)
@@ -37,7 +40,7 @@ vec2 band_uv_from_target(vec2 own) {
   if (band.a < 0.5) return own;
   float band_d = view_distance(texelFetch(u_band_depth, px, 0).r);
   float own_d = view_distance(gl_FragCoord.z);
-  if (abs(band_d - own_d) >= u_band_tolerance_m + 0.05 * own_d) return own;
+  if (abs(band_d - own_d) >= u_band_tolerance_m + u_band_window_per_m * own_d) return own;
   return (u_level1_center + band.rg) * band.b + own * (1.0 - band.b);
 }
 
@@ -57,7 +60,7 @@ vec2 band_uv_inline(vec2 own, vec3 rel) {
   float t_own = length(rel);
   vec3 dir = rel / t_own;
   // The band pass's depth window, along the ray.
-  float win = u_band_tolerance_m + 0.05 * t_own;
+  float win = u_band_tolerance_m + u_band_window_per_m * t_own;
   float t_lo = max(t_own - win, 0.0), t_hi = t_own + win;
   vec2 eye_s = vec2(u_eye_sample) + u_eye_frac.xy / u_spacing;
   vec2 a = eye_s + t_lo * dir.xy / u_spacing, b = eye_s + t_hi * dir.xy / u_spacing;

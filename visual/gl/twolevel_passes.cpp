@@ -21,6 +21,7 @@ TwoLevelPasses::TwoLevelPasses(const std::string& shader_dir, const TwoLevelStag
       grid_program_(shader_dir, "terrain_grid.vert", stages.grid),
       level0_program_(shader_dir, "level0.vert", stages.level0),
       level0_clipped_program_(shader_dir, "level0.vert", stages.level0_clipped),
+      level0_without_band_program_(shader_dir, "level0.vert", stages.level0_without_band),
       band_program_(shader_dir, "terrain_grid.vert", "band.frag"),
       level0_(level0, lift),
       level0_max_error_m_(level0.max_error_m) {
@@ -155,8 +156,9 @@ void TwoLevelPasses::draw_level0(const lod::TwoLevelSelection& sel, const TwoLev
   }
   glBindTextureUnit(unit(TextureUnit::kBetaTemplate), beta_.texture().id());
   glBindVertexArray(level0_.vao.id());
-  for (int cls = 0; cls < 2; ++cls) {
-    const ShaderProgram& program = cls == 0 ? level0_program_ : level0_clipped_program_;
+  const ShaderProgram* programs[3] = {&level0_program_, &level0_clipped_program_, &level0_without_band_program_};
+  for (int cls = 0; cls < 3; ++cls) {
+    const ShaderProgram& program = *programs[cls];
     const lod::IndexRuns& runs = sel.level0_runs[cls];
     if (runs.count.empty() || skipped("level0")) continue;
     // As glMultiDrawElements takes them (counts, byte offsets into the index buffer).
@@ -182,7 +184,8 @@ void TwoLevelPasses::draw_level0(const lod::TwoLevelSelection& sel, const TwoLev
     program.set("u_grown_half", 0.5f * float(n - 1) + float(sel.band_w));
     program.set("u_level1_half", 0.5f * float(n - 1));
     program.set("u_near_far", glm::vec2(float(ctx.near_m), float(ctx.far_m)));
-    program.set("u_band_tolerance_m", float(2.0 * level0_max_error_m_));
+    program.set("u_band_tolerance_m", float(lod::BandRing::tolerance_for(level0_max_error_m_)));
+    program.set("u_band_window_per_m", float(lod::BandRing::kWindowPerMetre));
     draw_indexed_runs(draw_counts_, draw_offsets_);
   }
   for (const auto& runs : sel.level0_runs) drawn.level0_tris += (long long)runs.indices() / 3;

@@ -28,7 +28,8 @@ namespace ig::gl {
 // The fragment stages of each terrain program (the scene's shading around
 // the method's own mains).
 struct TwoLevelStages {
-  std::vector<std::string> grid, level0, level0_clipped;
+  // level0_without_band: for Level0 the band cannot reach (lod::TwoLevelSelection::level0_runs[2]).
+  std::vector<std::string> grid, level0, level0_clipped, level0_without_band;
 };
 
 // What a frame's draw needs besides the selection.
@@ -68,13 +69,13 @@ class TwoLevelPasses {
 
   options::TwoLevelOptions options_;
   std::string shader_dir_;
-  ShaderProgram grid_program_, level0_program_, level0_clipped_program_, band_program_;
+  ShaderProgram grid_program_, level0_program_, level0_clipped_program_, level0_without_band_program_, band_program_;
   // The coverage count, for a single-sampled or a multisampled frame (made
   // for the first frame's kind, again if the kind changes).
   ShaderProgram count_program_;
   bool count_multisampled_ = false;
   Level0Buffer level0_;
-  double level0_max_error_m_ = 0.0;  // the band's depth tolerance is twice it
+  double level0_max_error_m_ = 0.0;  // sets the band's depth tolerance (lod::BandRing::tolerance_for)
   // The meshes of the last two (N, w) pairs drawn: enough for a size that
   // steps back and forth, while a flight through many sizes keeps no more
   // (the ring at N = 1025 alone is megabytes).

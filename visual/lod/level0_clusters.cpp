@@ -77,9 +77,11 @@ Level0Clusters::Level0Clusters(const Level0Mesh& mesh, glm::dvec2 spacing_m, int
 }
 
 int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const BoxVisible& visible, IndexRuns& outside,
-                           IndexRuns& crossing, const MarkHidden& mark_hidden) const {
+                           IndexRuns& crossing, const MarkHidden& mark_hidden, const BandRing* ring,
+                           IndexRuns* clear_of_band) const {
   outside.clear();
   crossing.clear();
+  if (clear_of_band) clear_of_band->clear();
   auto inside_square = [&](glm::ivec2 lo, glm::ivec2 hi) {
     return lo.x >= square_lo.x && lo.y >= square_lo.y && hi.x <= square_hi.x && hi.y <= square_hi.y;
   };
@@ -120,7 +122,8 @@ int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const Box
       continue;
     }
     if (clear_of_square(c.lo, c.hi)) {
-      outside.append(3 * c.first_triangle, 3 * c.triangles);
+      const bool band_free = ring && clear_of_band && !ring->may_reach(c.lo, c.hi, c.z_lo, c.z_hi);
+      (band_free ? *clear_of_band : outside).append(3 * c.first_triangle, 3 * c.triangles);
       continue;
     }
     for (std::uint32_t t = c.first_triangle; t < c.first_triangle + c.triangles; ++t) {

@@ -13,6 +13,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "lod/band_ring.h"
 #include "lod/horizon_culling.h"
 #include "lod/roam_level0_mesh.h"
 
@@ -45,9 +46,12 @@ class Level0Clusters {
   // samples: `outside` wholly outside it, `crossing` across its edge (the
   // discarding program), triangles inside it never. Clusters whose box is not
   // visible, or that `mark_hidden` marks, are skipped whole. Returns the
-  // number of clusters culled (out of view or hidden).
+  // number of clusters culled (out of view or hidden). With `ring` and
+  // `clear_of_band`, clusters outside the square that the band cannot reach
+  // (BandRing::may_reach) go to `clear_of_band` instead of `outside`.
   int select(glm::ivec2 square_lo, glm::ivec2 square_hi, const BoxVisible& visible, IndexRuns& outside,
-             IndexRuns& crossing, const MarkHidden& mark_hidden = {}) const;
+             IndexRuns& crossing, const MarkHidden& mark_hidden = {}, const BandRing* ring = nullptr,
+             IndexRuns* clear_of_band = nullptr) const;
 
   int cluster_count() const { return int(clusters_.size()); }
 

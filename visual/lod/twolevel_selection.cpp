@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "lod/band_ring.h"
 #include "lod/level1_coverage_predictor.h"
 #include "lod/level1_selection.h"
 #include "lod/terrain_floors.h"
@@ -226,7 +227,17 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
   // Level0: clusters of the static buffer outside the view are skipped whole;
   // inside the square nothing is drawn; outside it no discard, so the depth
   // test can reject hidden fragments early.
-  clusters_->select(origin, origin + (n - 1), in_view, sel_.level0_runs[0], sel_.level0_runs[1], occlusion);
+  BandRing ring;
+  ring.lo = g0;
+  ring.hi = g1;
+  ring.eye = view.position;
+  ring.spacing = {hf.spacing_x_m, hf.spacing_y_m};
+  ring.tolerance_m = BandRing::tolerance_for(level0_.max_error_m);
+  ring.earth_radius_m = view.earth_radius_m;
+  const bool split = band_split_ && options_.band_inline;
+  sel_.level0_runs[2].clear();
+  clusters_->select(origin, origin + (n - 1), in_view, sel_.level0_runs[0], sel_.level0_runs[1], occlusion,
+                    split ? &ring : nullptr, split ? &sel_.level0_runs[2] : nullptr);
   sel_.level0_hidden_clusters = hidden_count;
 }
 

@@ -68,8 +68,10 @@ struct TwoLevelSelection {
   bool terrain_visible = false, band_visible = false;
   glm::ivec4 band_rect{0};  // the band's screen rectangle (x0, y0, x1, y1)
   std::vector<glm::ivec2> visible_blocks;  // Level1 block origins, nearest first
-  // Level0 runs: [0] wholly outside the Level1 square, [1] across its edge.
-  std::array<IndexRuns, 2> level0_runs;
+  // Level0 runs: [0] wholly outside the Level1 square, [1] across its edge,
+  // [2] outside and out of the band's reach (lod/band_ring.h; empty unless
+  // the band is shaded inline).
+  std::array<IndexRuns, 3> level0_runs;
   int level0_hidden_clusters = 0, level1_hidden_blocks = 0;
   // Per wall vertex along level1_perimeter(n), top and bottom: (1, height);
   // filled when blocks are visible.
@@ -100,6 +102,9 @@ class TwoLevelSelector {
   const Level0HeightQuery& level0_heights() const { return level0_heights_; }
   double level0_resolution() const { return level0_resolution_; }  // Level0 vertices / DEM samples
   void set_thresholds(double a1, double a2) { controller_.set_thresholds(a1, a2); }
+  // For tests: every Level0 cluster outside the square in runs[0], as if
+  // the band could reach them all (on by default).
+  void set_band_split(bool on) { band_split_ = on; }
   const Level1SizeController& controller() const { return controller_; }
 
  private:
@@ -117,6 +122,7 @@ class TwoLevelSelector {
   std::unique_ptr<HorizonCulling> horizon_;  // null when horizon culling is off
   Level1SizeController controller_;
   double level0_resolution_ = 0.0;
+  bool band_split_ = true;
   std::vector<glm::dvec3> prediction_rays_;
   // The square sel_.wall_z (and perimeter_, of walls_n_) was made for: the
   // walls' heights depend on nothing else (the DEM and Level0 do not

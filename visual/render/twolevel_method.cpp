@@ -37,7 +37,8 @@ TwoLevelMethod::TwoLevelMethod(TerrainScene& scene, const std::string& shader_di
   selector_ = std::make_unique<lod::TwoLevelSelector>(hf, pyramid_, std::move(level0), options_);
   const gl::TwoLevelStages stages{scene.shading_stages({"terrain.frag"}),
                                   scene.shading_stages({"level0_blend.frag", "level0.frag"}),
-                                  scene.shading_stages({"level0_blend.frag", "level0_clipped.frag"})};
+                                  scene.shading_stages({"level0_blend.frag", "level0_clipped.frag"}),
+                                  scene.shading_stages({"level0_no_band.frag", "level0.frag"})};
   passes_ = std::make_unique<gl::TwoLevelPasses>(shader_dir, stages, selector_->level0(), lift, options_);
   windows_ = scene.claim_windows();  // this channel's height (and imagery) window
 }

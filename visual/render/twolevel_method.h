@@ -73,6 +73,8 @@ class TwoLevelMethod final : public TerrainMethod {
   int level0_hidden_clusters() const { return selection().level0_hidden_clusters; }
   int level1_hidden_blocks() const { return selection().level1_hidden_blocks; }
   void set_thresholds(double a1, double a2) { selector_->set_thresholds(a1, a2); }
+  // For tests: all of Level0 outside the square through the band's program.
+  void set_band_split(bool on) { selector_->set_band_split(on); }
   // The generic controls (twolevel_method_controls.cpp).
   void tune(const MethodTuning& tuning) override;
   std::optional<LevelStatus> level_status() const override;
