@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "headless_run.h"
 #include "session/scenario_runner.h"
 #include "view_tour_scenario.h"
 
@@ -26,16 +27,11 @@ struct Frame {
 };
 
 std::vector<Frame> render_tour(const std::string& method, bool deferred) {
-  const std::vector<render_checks::View> views = {
-      {"valley", 4000, 3000, 120, 40, -4}, {"ridge", 7600, 7600, 400, 200, -12}, {"skyline", 2500, 9000, 60, 95, 2}};
+  const auto views = render_checks::valley_ridge_skyline();
   auto scenario = render_checks::view_tour_scenario("deferred_shading_test", views, kW, kH, 45.0);
   scenario.render.antialiasing = "off";  // the terrain passes' own pixels
   scenario.render.shading.deferred_shading = deferred;
-  ig::session::RunOptions o;
-  o.method = method;
-  o.headless = true;
-  o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
-  ig::session::ScenarioRunner runner(scenario, o);
+  ig::session::ScenarioRunner runner(scenario, headless_run(kW, kH, method));
   const auto& channel = runner.channels().front();
   std::vector<Frame> frames;
   for (int f = 0; f < int(views.size()); ++f) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "headless_run.h"
 #include "session/scenario_runner.h"
 #include "view_tour_scenario.h"
 
@@ -23,15 +24,10 @@ struct Frame {
 };
 
 std::vector<Frame> render_tour(const std::string& method, bool masked) {
-  const std::vector<render_checks::View> views = {
-      {"valley", 4000, 3000, 120, 40, -4}, {"ridge", 7600, 7600, 400, 200, -12}, {"skyline", 2500, 9000, 60, 95, 2}};
+  const auto views = render_checks::valley_ridge_skyline();
   auto scenario = render_checks::view_tour_scenario("post_filter_test", views, kW, kH, 45.0);
   scenario.render.antialiasing = "fxaa";
-  ig::session::RunOptions o;
-  o.method = method;
-  o.headless = true;
-  o.shader_dir = std::string(IG_BIN_DIR) + "/shaders";
-  ig::session::ScenarioRunner runner(scenario, o);
+  ig::session::ScenarioRunner runner(scenario, headless_run(kW, kH, method));
   const auto& channel = runner.channels().front();
   channel.renderer->set_post_filter_mask(masked);
   std::vector<Frame> frames;

@@ -14,6 +14,12 @@ struct View {
   double x, y, agl, heading, pitch;  // local metres, metres above ground, degrees
 };
 
+// A valley, a ridge seen from above and a skyline: the views of the checks
+// that a pass leaves the picture as it was.
+inline std::vector<View> valley_ridge_skyline() {
+  return {{"valley", 4000, 3000, 120, 40, -4}, {"ridge", 7600, 7600, 400, 200, -12}, {"skyline", 2500, 9000, 60, 95, 2}};
+}
+
 inline ig::io::Scenario view_tour_scenario(const std::string& name, const std::vector<View>& views, int width,
                                            int height, double fov_y_deg) {
   ig::io::Scenario s;
