@@ -1,12 +1,12 @@
 #include "gl/post_filter_pass.h"
 
+#include <string>
+#include <vector>
+
 #include "gl/frame_state.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/scoped_disable.h"
 #include "gl/texture_units.h"
-
-#include <string>
-#include <vector>
 
 namespace ig::gl {
 
@@ -27,6 +27,7 @@ void PostFilterPass::run(const RenderTarget& target, PassRecorder& recorder) {
   // Copy and mark every pixel, then filter where the mask says: the mask's
   // depth 1 passes the filter's triangle (depth 0, GL_LESS), 0 does not.
   target.bind_output_with_mask();
+  glEnable(GL_DEPTH_TEST);  // depth is written only with the test on
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_ALWAYS);
   draw(mark_, recorder);
