@@ -10,7 +10,7 @@ layout(location = 0) out vec4 o_color;
 float luma(vec3 c);
 float luma_px(ivec2 p);
 vec4 neighbour_lumas(ivec2 px);
-bool is_edge(float m, vec4 nsew);
+bool is_edge(float m, vec4 nsew, out float range);
 float luma_at(vec2 uv) { return luma(textureLod(u_frame, uv, 0.0).rgb); }
 
 const float kSubpixel = 0.75;       // weight of the low-pass term
@@ -30,12 +30,12 @@ void main() {
   vec4 centre = texelFetch(u_frame, px, 0);
   float m = luma(centre.rgb);
   vec4 nsew = neighbour_lumas(px);
-  if (!is_edge(m, nsew)) {  // never taken after edge_mark.frag's mask; kept so the filter stands alone
+  float range;
+  if (!is_edge(m, nsew, range)) {  // never taken after edge_mark.frag's mask; kept so the filter stands alone
     o_color = centre;
     return;
   }
   float n = nsew.x, s = nsew.y, e = nsew.z, w = nsew.w;
-  float range = max(m, max(max(n, s), max(e, w))) - min(m, min(min(n, s), min(e, w)));
   float ne = luma_px(hi_px), sw = luma_px(lo_px);
   float nw = luma_px(ivec2(lo_px.x, hi_px.y)), se = luma_px(ivec2(hi_px.x, lo_px.y));
 

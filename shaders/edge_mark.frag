@@ -9,11 +9,12 @@ layout(location = 0) out vec4 o_color;
 
 float luma(vec3 c);
 vec4 neighbour_lumas(ivec2 px);
-bool is_edge(float m, vec4 nsew);
+bool is_edge(float m, vec4 nsew, out float range);
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 centre = texelFetch(u_frame, px, 0);
   o_color = centre;
-  gl_FragDepth = is_edge(luma(centre.rgb), neighbour_lumas(px)) ? 1.0 : 0.0;
+  float range;
+  gl_FragDepth = is_edge(luma(centre.rgb), neighbour_lumas(px), range) ? 1.0 : 0.0;
 }

@@ -19,8 +19,10 @@ vec4 neighbour_lumas(ivec2 px) {
               luma_px(ivec2(lo_px.x, px.y)));
 }
 
-bool is_edge(float m, vec4 nsew) {
+// range: the luma's spread over the pixel and those four neighbours.
+bool is_edge(float m, vec4 nsew, out float range) {
   float lo = min(m, min(min(nsew.x, nsew.y), min(nsew.z, nsew.w)));
   float hi = max(m, max(max(nsew.x, nsew.y), max(nsew.z, nsew.w)));
-  return hi - lo >= max(kEdgeMin, hi * kEdgeRel);
+  range = hi - lo;
+  return range >= max(kEdgeMin, hi * kEdgeRel);
 }
