@@ -95,6 +95,7 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
 
 std::vector<std::string> TerrainScene::shading_library() const {
   const bool whole_heights = !overview_ && !windows_[0].height;
+  linked_without_window_ = linked_without_window_ || whole_heights;
   return {"terrain_shading.frag",
           shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
           height_differences_texture() ? "height_differences_texture.frag" : "height_differences_heights.frag",
@@ -205,6 +206,8 @@ void TerrainScene::set_sun_direction(const glm::vec3& towards_sun) {
 void TerrainScene::enable_height_window(int size) {
   auto& first = windows_[0].height;
   if (size <= 0 && overview_) size = first ? first->size().x : kDefaultHeightWindow;
+  if (size > 0 && linked_without_window_)
+    throw std::logic_error("enable_height_window after a shading program was linked without the window's reads");
   for (Windows& set : windows_)
     set.height = size > 0 ? std::make_unique<HeightWindowTexture>(heightfield_, size) : nullptr;
 }

@@ -144,7 +144,8 @@ class TerrainScene {
   // two-level method: Level1 and its band) keeps the window on it with
   // follow_window(), and reads through it (shaders/height_at_window.frag,
   // shaders/terrain_grid.vert). Call it before making the methods: their
-  // programs link the window's reads only if the scene has a window then.
+  // programs link the window's reads only if the scene has a window then
+  // (std::logic_error when a program was linked without them already).
   void enable_height_window(int size);
   // Each channel's view needs full resolution around its own Level1, so the
   // windows come in sets, one per method that draws through them (every
@@ -221,6 +222,8 @@ class TerrainScene {
   gl::Texture detail_tex_;   // ground detail (terrain/detail_noise.h); empty when shading_.ground_detail is off
   gl::Texture height_differences_tex_;  // see height_differences_texture(); empty with an overview
   bool use_height_differences_ = true;
+  // A shading program was linked reading the whole DEM alone (no window).
+  mutable bool linked_without_window_ = false;
   double upload_ms_ = 0.0;
   std::int64_t imagery_uncovered_ = 0;
   // Imagery beyond the limit: full-resolution pixels per overview pixel, and

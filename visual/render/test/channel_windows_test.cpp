@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
+#include <stdexcept>
 
 #include "render/test/lod_view_checks.h"
 
@@ -52,6 +54,23 @@ TEST(ChannelWindows, EachChannelKeepsItsOwnWindowOnItsLevel1) {
   EXPECT_EQ(scene.window_sets(), 3);
   ig::render::TwoLevelMethod again(scene, world.shader_dir);
   EXPECT_EQ(scene.window_sets(), 3);
+}
+
+// Programs link the window's reads only if the scene has a window when they
+// are made; a window enabled after a program linked without them would be
+// drawn past, so it is refused instead.
+TEST(ChannelWindows, AWindowAfterAProgramLinkedWithoutItIsRefused) {
+  lod_views::World world(257);
+  ig::render::TerrainScene before(world.hf, ig::render::ShadingParams{});
+  before.enable_height_window(256);
+  const auto windowed = before.shading_stages({"terrain.frag"});
+  EXPECT_NE(std::find(windowed.begin(), windowed.end(), "height_at_window.frag"), windowed.end());
+
+  ig::render::TerrainScene after(world.hf, ig::render::ShadingParams{});
+  const auto whole = after.shading_stages({"terrain.frag"});
+  EXPECT_NE(std::find(whole.begin(), whole.end(), "height_at_whole.frag"), whole.end());
+  EXPECT_THROW(after.enable_height_window(256), std::logic_error);
+  EXPECT_NO_THROW(after.enable_height_window(0)) << "no window: nothing linked is missing";
 }
 
 }  // namespace
