@@ -183,7 +183,10 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
     << "- image: " << c.width << "x" << c.height << ", vertical FOV " << num(c.fov_y_deg) << " deg\n"
     << "- frames: " << c.frames << " of the scenario's " << c.scenario_frames << " (time step "
     << num(c.time_step_s) << " s" << (c.frames < c.scenario_frames ? ", spread evenly over the flight" : "")
-    << "), one untimed warm-up frame per method\n"
+    << "), one untimed warm-up frame per method, "
+    << (c.interleaved ? "interleaved (each frame flown by every method and knob in turn, the first of them rotating)"
+                      : "one method and knob after the other")
+    << "\n"
     << "- image error: " << c.sample_indices.size() << " sampled frames (scenario frames " << list(c.sample_indices)
     << ") against the reference renderer with the same camera\n"
     << "- temporal error: " << c.temporal_before_indices.size()

@@ -96,6 +96,7 @@ struct BenchContext {
   std::vector<int> temporal_before_indices;  // the frames rendered just before a sample (its temporal pair)
   double wall_s = 0.0;
   bool sweep = false;
+  bool interleaved = false;  // every frame flown by every method and knob in turn, not one after the other
 };
 
 void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows);

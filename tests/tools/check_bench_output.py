@@ -7,6 +7,9 @@ error included), the temporal error is non-negative for every row, results.md
 holds both tables, error_vs_time.png and temporal_error.png are real PNGs, and
 frames.csv / samples.csv have one row per method/knob and frame / sampled
 frame, samples.csv with a temporal error exactly where a pair exists.
+With --same-errors-as DIR, samples.csv must equal DIR's in every cell but
+the timing (frame_ms), row for row once both are sorted by method, knob and
+frame: the order the frames were flown in changes no picture.
 Prints what it checked; exit 1 on the first failure."""
 import argparse
 import csv
@@ -51,6 +54,24 @@ def same_knob(a, b):
     return math.isclose(float(a), float(b), rel_tol=1e-5)
 
 
+def errors_by_frame(out_dir):
+    """samples.csv rows without their timing, keyed by method, knob and frame."""
+    with open(os.path.join(out_dir, "samples.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {(r["method"], r["knob"], r["frame"]): {k: v for k, v in r.items() if k != "frame_ms"} for r in rows}
+
+
+def check_same_errors(out_dir, other_dir):
+    mine, theirs = errors_by_frame(out_dir), errors_by_frame(other_dir)
+    if mine.keys() != theirs.keys():
+        fail(f"samples.csv of {out_dir} and {other_dir} cover different methods, knobs or frames")
+    for key, row in mine.items():
+        differ = [c for c in row if row[c] != theirs[key][c]]
+        if differ:
+            fail(f"samples.csv {key}: {differ[0]} = {row[differ[0]]} here, {theirs[key][differ[0]]} in {other_dir}")
+    return len(mine)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("out_dir")
@@ -59,6 +80,7 @@ def main():
     ap.add_argument("--samples", type=int, required=True, help="error samples per method/knob")
     ap.add_argument("--methods", required=True, help="comma-separated methods expected, in order, or all (any)")
     ap.add_argument("--pairs", type=int, required=True, help="temporal error pairs per method/knob")
+    ap.add_argument("--same-errors-as", metavar="DIR", help="another run whose samples.csv must match but for timing")
     a = ap.parse_args()
     d = a.out_dir
 
@@ -170,6 +192,9 @@ def main():
     if "temporal error mean / max" not in md:
         fail("results.md lacks the temporal error column")
 
+    if a.same_errors_as:
+        n = check_same_errors(d, a.same_errors_as)
+        print(f"check_bench_output: {n} sampled frames match {a.same_errors_as} but for timing")
     print(f"check_bench_output: ok: {len(rows)} rows ({', '.join(methods)}), all numeric fields finite, "
           f"temporal error >= 0 over {a.pairs} pairs each, results.md tables, error_vs_time.png and "
           f"temporal_error.png")

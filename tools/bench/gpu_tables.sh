@@ -11,7 +11,9 @@
 # RUN_REGEX picks runs by name (default: all): reduced15 reduced60 full15
 # full60 reduced15_noculling. Each run has its own time limit, so one that
 # runs over leaves the others' results. A 4-frame smoke run comes first and
-# stops the script when EGL or the libraries fail.
+# stops the script when EGL or the libraries fail. Every run is interleaved
+# (--interleave): at frames of a few ms the GPU's clock drifts during a run,
+# and so it reaches every method alike.
 set -uo pipefail
 [ $# -ge 3 ] || { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 pack=$(cd "$1" && pwd) dem=$(cd "$2" && pwd) out=$3 only=${4:-.*}
@@ -47,9 +49,9 @@ run() {
   timeout "$limit" "${ig[@]}" bench "$scenario" "$@" --out "$out/$name" > "$out/$name.log" 2>&1
   echo "exit $? $(date +%T) (1: no gnuplot for the plots; 124: over ${limit} s)"
 }
-reduced=(--methods all --sweep --size 640x512 --frames 40 --error-samples 6)
+reduced=(--methods all --sweep --interleave --size 640x512 --frames 40 --error-samples 6)
 run reduced15 150 "${reduced[@]}" --fov 15
 run reduced60 150 "${reduced[@]}" --fov 60
-run full15 240 --methods all --sweep --fov 15
-run full60 240 --methods all --sweep --fov 60
+run full15 240 --methods all --sweep --interleave --fov 15
+run full60 240 --methods all --sweep --interleave --fov 60
 run reduced15_noculling 150 "${reduced[@]}" --fov 15 --horizon-culling off

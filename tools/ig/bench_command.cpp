@@ -23,7 +23,7 @@
 #include <set>
 
 #include "session/bench_report.h"
-#include "session/bench_samples.h"
+#include "bench_variant_run.h"
 #include "cli_args.h"
 #include "commands.h"
 #include "gl/shader_program.h"
@@ -48,19 +48,14 @@ using session::match_horizon_error;
 
 constexpr const char* kUsage =
     "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
-    "                [--error-samples N] [--match-px PX] [--skip-pass NAME] [--shader-dir DIR] [--out DIR]\n"
+    "                [--error-samples N] [--match-px PX] [--skip-pass NAME] [--interleave] [--shader-dir DIR]\n"
+    "                [--out DIR]\n"
     "Flies every LOD method along the scenario's path and reports frame time against image error\n"
     "versus the reference renderer (docs/bench.md): results.csv, results.md, error_vs_time.png,\n"
     "temporal_error.png.\n"
     "Exit status: 0 ok, 1 the run failed (or the plot could not be drawn), 2 bad arguments.\n";
 
 using Clock = std::chrono::steady_clock;
-// CPU time of the whole process (every thread: llvmpipe rasterises on its own).
-double process_cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
-}
 
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -77,6 +72,7 @@ struct Args {
   std::optional<double> match_px;
   std::vector<std::string> skip_passes;  // --skip-pass (twolevel cost breakdown)
   std::string horizon_culling;           // --horizon-culling on|off for every method ("": the scenario's)
+  bool interleave = false;               // every frame flown by every variant in turn
   std::string shader_dir;
   std::string out_dir;
   std::string command_line;  // as typed, for the report
@@ -143,6 +139,10 @@ Args parse_args(const std::vector<std::string>& a) {
                  "scenario's, on)")
       ->check(CLI::IsMember({"on", "off"}))
       ->option_text("on|off");
+  app.add_flag("--interleave", args.interleave,
+               "fly every frame with every method and knob in turn (all built first), so that a drift of the "
+               "machine's speed or the GPU's clock during the run reaches them alike (default: one after the "
+               "other)");
   add_shader_dir_option(app, args.shader_dir);
   app.add_option("--out", args.out_dir, "output folder (default out/<scenario>_bench)")->option_text("DIR");
   parse_command_line(app, a);
@@ -173,36 +173,6 @@ std::vector<int> sample_positions(int frames, int m) {
   m = std::min(m, frames);
   std::vector<int> out;
   for (int j = 0; j < m; ++j) out.push_back(int(std::floor((j + 0.5) * frames / m)));
-  return out;
-}
-
-// One method at one knob value to run.
-struct Variant {
-  std::string method;
-  std::optional<double> knob;  // nullopt: the method's default
-  bool is_default = true;
-};
-
-std::vector<Variant> variants_for(const std::string& method, bool sweep, const render::MethodOptions& options) {
-  const auto values = render::knob_sweep(method);
-  if (!sweep || values.empty()) return {{method, std::nullopt, true}};
-  // The default knob value, to mark it (and add it when the sweep lacks it).
-  const auto knob = render::default_knob(method, options);
-  std::vector<double> v = values;
-  if (knob) {
-    const double d = knob->value;
-    const bool present =
-        std::any_of(v.begin(), v.end(), [&](double x) { return std::abs(x - d) <= 1e-9 * std::max(1.0, std::abs(d)); });
-    if (!present) {
-      // Keep the sweep's order (least to most accurate) whichever way the knob runs.
-      const bool ascending = v.back() >= v.front();
-      auto pos = std::find_if(v.begin(), v.end(), [&](double x) { return ascending ? x > d : x < d; });
-      v.insert(pos, d);
-    }
-  }
-  std::vector<Variant> out;
-  for (double x : v)
-    out.push_back({method, x, knob && std::abs(x - knob->value) <= 1e-9 * std::max(1.0, std::abs(knob->value))});
   return out;
 }
 
@@ -253,14 +223,6 @@ class Progress {
   bool tty_;
   long long total_, done_ = 0;
 };
-
-std::string label_of(const Variant& v, const render::TerrainMethod& m) {
-  const auto k = m.knob();
-  if (!k) return v.method;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", k->value);
-  return v.method + " " + k->name + "=" + buf;
-}
 
 // ig bench with its parsed arguments: the exit status.
 int run(const Args& args) {
@@ -329,107 +291,67 @@ int run(const Args& args) {
     return runner.camera_for(runner.pose_at(frame * s.time_step_s), ref_channel);
   };
   const auto target_ptr = session::make_frame_target(s.render, width, height);  // as the reference's
-  const gl::RenderTarget& target = *target_ptr;
   stats::FrameLog frames_csv((out / "frames.csv").string());
   stats::FrameLog samples_csv((out / "samples.csv").string());
-  std::vector<BenchRow> rows;
-  for (const Variant& v : variants) {
-    const auto t_variant = Clock::now();
-    BenchRow row;
-    row.method = v.method;
-    const auto t0 = Clock::now();
-    auto method = render::make_method(v.method, runner.scene(), run.shader_dir, method_options, v.knob);
-    row.build_ms = ms_since(t0);
-    row.knob = method->knob();
-    row.default_knob = v.is_default;
-    render::FrameRenderer renderer(runner.scene(), *method, run.shader_dir);
-    const std::string label = label_of(v, *method);
-    const stats::Cell knob_cell = row.knob ? stats::Cell("knob", row.knob->value) : stats::Cell("knob", std::string());
+  BenchFlight flight;
+  flight.scene = &runner.scene();
+  flight.shader_dir = run.shader_dir;
+  flight.method_options = method_options;
+  flight.frames = frames;
+  flight.sample_pos = sample_pos;
+  flight.before_pos = before_pos;
+  flight.reference = std::move(reference);
+  flight.reference_luma = std::move(reference_luma);
+  flight.reference_camera = std::move(reference_camera);
+  flight.camera_at = camera_at;
+  flight.target = target_ptr.get();
+  flight.width = width;
+  flight.height = height;
+  flight.time_step_s = s.time_step_s;
+  flight.frames_csv = &frames_csv;
+  flight.samples_csv = &samples_csv;
 
-    ig::session::render_view(runner.scene(), renderer, camera_at(frames.front()), target);  // warm-up: first-use allocations, untimed
-    std::vector<double> frame_ms, cpu_ms, cores, hidden, lod_ms, triangles, vs, fs, passed, prims, draws, uploads;
-    session::BenchSamples samples(width, height);
-    std::map<int, stats::LumaImage> method_before;  // the method's images of the frames before samples
-    size_t next_sample = 0;
-    for (int i = 0; i < int(frames.size()); ++i) {
-      const render::Camera camera = camera_at(frames[i]);
-      const auto tf = Clock::now();
-      const double cpu0 = process_cpu_ms();
-      const render::ViewResult vr = ig::session::render_view(runner.scene(), renderer, camera, target);
-      const double cpu = process_cpu_ms() - cpu0;
-      const double ms = ms_since(tf);
-      frame_ms.push_back(ms);
-      cpu_ms.push_back(cpu);
-      cores.push_back(ms > 0.0 ? cpu / ms : 0.0);
-      hidden.push_back(vr.method.column("hidden_boxes"));
-      lod_ms.push_back(vr.timings.lod_ms);
-      triangles.push_back(double(vr.method.triangles));
-      vs.push_back(double(vr.total.vs_invocations));
-      fs.push_back(double(vr.total.fs_invocations));
-      passed.push_back(double(vr.total.samples_passed) / (double(width) * height));
-      prims.push_back(double(vr.total.primitives));
-      draws.push_back(double(vr.total.draw_calls));
-      uploads.push_back(double(vr.total.bytes_uploaded));
-      std::vector<stats::Cell> frame_row = {{"method", v.method},
-                                            knob_cell,
-                                            {"frame", frames[i]},
-                                            {"frame_ms", ms},
-                                            {"cpu_ms", cpu},
-                                            {"lod_ms", vr.timings.lod_ms},
-                                            {"terrain_ms", vr.timings.terrain_ms},
-                                            {"sky_ms", vr.timings.sky_ms},
-                                            {"triangles", vr.method.triangles},
-                                            {"hidden_boxes", hidden.back()}};
-      session::append_work_columns(frame_row, vr, /*per_pass=*/false);
-      frames_csv.add_row(frame_row);
-      const bool sampled = next_sample < sample_pos.size() && sample_pos[next_sample] == i;
-      if (sampled || before_pos.count(i)) {
-        if (reference_camera[i].position != camera.position)
-          throw std::logic_error("reference and method cameras differ at frame " + std::to_string(frames[i]));
-        const stats::FrameImage img = stats::read_frame_image(target);
-        stats::LumaImage luma = stats::luminance(img);
-        if (sampled) {
-          ++next_sample;
-          std::optional<session::TemporalSample> pair;
-          if (method_before.count(i - 1))
-            pair = session::TemporalSample{
-                frames[i - 1], frames[i] * s.time_step_s,
-                stats::temporal_error(method_before[i - 1], luma, reference_luma[i - 1], reference_luma[i])};
-          method_before.erase(i - 1);
-          std::vector<stats::Cell> cells = {{"method", v.method}, knob_cell, {"frame", frames[i]}, {"frame_ms", ms}};
-          for (auto& c : samples.add(stats::image_error(img, reference[i], camera),
-                                     method->error_bound_px(camera, height), pair))
-            cells.push_back(std::move(c));
-          samples_csv.add_row(cells);
-        }
-        if (before_pos.count(i)) method_before[i] = std::move(luma);
-      }
-      progress.step(label, i + 1, int(frames.size()));
-    }
-    row.frames = int(frames.size());
-    const auto frame_ms_percentiles = stats::percentiles(frame_ms);
-    row.frame_ms_median = frame_ms_percentiles.median;
-    row.frame_ms_p95 = frame_ms_percentiles.p95;
-    row.lod_ms_median = stats::percentiles(lod_ms).median;
-    row.cpu_ms_median = stats::percentiles(cpu_ms).median;
-    row.cores_median = stats::percentiles(cores).median;
-    row.hidden_boxes_median = stats::percentiles(hidden).median;
-    row.triangles_median = stats::percentiles(triangles).median;
-    row.vs_invocations_median = stats::percentiles(vs).median;
-    row.fs_invocations_median = stats::percentiles(fs).median;
-    row.passed_per_pixel_median = stats::percentiles(passed).median;
-    row.primitives_median = stats::percentiles(prims).median;
-    row.draw_calls_median = stats::percentiles(draws).median;
-    row.upload_bytes_median = stats::percentiles(uploads).median;
-    samples.finish(row);
+  std::vector<BenchRow> rows;
+  auto report = [&](const VariantRun& r, const BenchRow& row, double seconds) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
                   "%-36s %d frames: median %.2f ms, p95 %.2f ms, horizon mean %.3f px, max %.0f px, temporal "
                   "%.3f (%.1f s)",
-                  label.c_str(), row.frames, row.frame_ms_median, row.frame_ms_p95, row.horizon_mean_px,
-                  row.horizon_max_px, row.temporal_error_mean, ms_since(t_variant) / 1000.0);
+                  r.label().c_str(), row.frames, row.frame_ms_median, row.frame_ms_p95, row.horizon_mean_px,
+                  row.horizon_max_px, row.temporal_error_mean, seconds);
     progress.line(buf);
-    rows.push_back(row);
+  };
+  const int n_frames = int(frames.size());
+  if (!args.interleave) {
+    for (const Variant& v : variants) {
+      const auto t0 = Clock::now();
+      VariantRun r(v, flight);
+      r.warm_up();
+      for (int i = 0; i < n_frames; ++i) {
+        r.fly(i);
+        progress.step(r.label(), i + 1, n_frames);
+      }
+      rows.push_back(r.finish());
+      report(r, rows.back(), ms_since(t0) / 1000.0);
+    }
+  } else {
+    // Every variant built first; then each frame flown by all of them, the
+    // first of them rotating so that none always follows the same one.
+    const auto t0 = Clock::now();
+    std::vector<std::unique_ptr<VariantRun>> runs;
+    for (const Variant& v : variants) runs.push_back(std::make_unique<VariantRun>(v, flight));
+    for (auto& r : runs) r->warm_up();
+    const int n = int(runs.size());
+    for (int i = 0; i < n_frames; ++i)
+      for (int k = 0; k < n; ++k) {
+        VariantRun& r = *runs[(i + k) % n];
+        r.fly(i);
+        progress.step(r.label(), i + 1, n_frames);
+      }
+    for (auto& r : runs) {
+      rows.push_back(r->finish());
+      report(*r, rows.back(), ms_since(t0) / 1000.0);
+    }
   }
   progress.finish();
 
@@ -465,6 +387,7 @@ int run(const Args& args) {
   for (int p : sample_pos) c.sample_indices.push_back(frames[p]);
   for (int p : before_pos) c.temporal_before_indices.push_back(frames[p]);
   c.sweep = args.sweep;
+  c.interleaved = args.interleave;
   c.wall_s = ms_since(start) / 1000.0;
 
   write_bench_csv((out / "results.csv").string(), rows);

@@ -1,0 +1,96 @@
+// One method at one knob value flown along the bench's frames: renders a
+// frame when asked, times it, compares the sampled frames with the
+// reference, and sums it all up as a BenchRow. ig bench flies its variants
+// one after the other, or all of them frame by frame in turn (--interleave),
+// so that a drift of the machine's speed or of the GPU's clock during the
+// run reaches every method alike.
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/frame_renderer.h"
+#include "render/terrain_method.h"
+#include "session/bench_report.h"
+#include "session/bench_samples.h"
+#include "stats/frame_log.h"
+#include "stats/image_error.h"
+#include "stats/temporal_error.h"
+
+namespace ig::gl {
+class RenderTarget;
+}
+
+namespace ig::app {
+
+// One method at one knob value to run.
+struct Variant {
+  std::string method;
+  std::optional<double> knob;  // nullopt: the method's default
+  bool is_default = true;
+};
+
+// What every variant flies and is compared with, shared by all of them.
+struct BenchFlight {
+  render::TerrainScene* scene = nullptr;
+  std::string shader_dir;
+  render::MethodOptions method_options;
+  std::vector<int> frames;       // scenario frames, in flight order
+  std::vector<int> sample_pos;   // positions in `frames` compared with the reference
+  std::set<int> before_pos;      // positions rendered just before a sample
+  std::map<int, stats::FrameImage> reference;       // by position: the samples
+  std::map<int, stats::LumaImage> reference_luma;   // by position: samples and frames before them
+  std::map<int, render::Camera> reference_camera;   // by position
+  std::function<render::Camera(int frame)> camera_at;
+  const gl::RenderTarget* target = nullptr;
+  int width = 0, height = 0;
+  double time_step_s = 0.0;
+  stats::FrameLog* frames_csv = nullptr;
+  stats::FrameLog* samples_csv = nullptr;
+};
+
+class VariantRun {
+ public:
+  // Builds the method (timed as the row's build_ms) and its renderer.
+  VariantRun(const Variant& variant, const BenchFlight& flight);
+  VariantRun(const VariantRun&) = delete;
+  VariantRun& operator=(const VariantRun&) = delete;
+
+  const std::string& label() const { return label_; }
+  // The first frame once, untimed: first-use allocations stay out of the figures.
+  void warm_up();
+  // Renders, times and logs the frame at position `pos` of flight.frames.
+  // Positions must come in increasing order (temporal pairs and incremental
+  // methods rely on it).
+  void fly(int pos);
+  // The row of medians and errors; call once, after the last fly().
+  session::BenchRow finish();
+
+ private:
+  const BenchFlight& flight_;
+  Variant variant_;
+  session::BenchRow row_;
+  std::unique_ptr<render::TerrainMethod> method_;
+  std::unique_ptr<render::FrameRenderer> renderer_;
+  std::string label_;
+  stats::Cell knob_cell_;
+  session::BenchSamples samples_;
+  std::vector<double> frame_ms_, cpu_ms_, cores_, hidden_, lod_ms_, triangles_, vs_, fs_, passed_, prims_, draws_,
+      uploads_;
+  std::map<int, stats::LumaImage> method_before_;  // the method's images of the frames before samples
+  size_t next_sample_ = 0;
+  int last_pos_ = -1;
+};
+
+// Every knob value of `method`'s sweep (plus its default when the sweep lacks
+// it), or its default alone.
+std::vector<Variant> variants_for(const std::string& method, bool sweep, const render::MethodOptions& options);
+
+}  // namespace ig::app
