@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -22,18 +21,14 @@
 #include <map>
 #include <set>
 
-#include "session/bench_report.h"
 #include "bench_variant_run.h"
 #include "cli_args.h"
 #include "commands.h"
 #include "gl/shader_program.h"
-#include "render/frame_renderer.h"
-#include "render/twolevel_method.h"
+#include "session/bench_report.h"
 #include "session/scenario_runner.h"
 #include "stats/frame_log.h"
 #include "stats/image_error.h"
-#include "stats/temporal_error.h"
-#include "session/view_step.h"
 
 namespace ig::app {
 namespace {
