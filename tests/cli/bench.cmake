@@ -25,20 +25,21 @@ add_test(NAME cli.bench.sweep
     test $rows -ge 3
     grep -q 'image: 128x96, vertical FOV 30 deg' '${IG_TEST_OUT}/bench_sweep/results.md'
     grep -q '^twolevel,level0_budget,.*,1,' '${IG_TEST_OUT}/bench_sweep/results.csv'
-    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_sweep' --rows $rows --frames 6 --samples 6 --pairs 5 --methods twolevel,reference")
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_sweep' --rows $rows --frames 6 --samples 6 --pairs 5 --methods twolevel,reference --order sequential")
 set_tests_properties(cli.bench.sweep PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok"
   FIXTURES_SETUP bench_sweep_run)
 
-# --interleave: the same sweep flown frame by frame in turn gives the same
-# rows and, frame for frame, the same image and temporal errors (only the
-# timing may differ); results.md says how the frames were flown.
+# --interleave: the same sweep flown frame by frame in turn (frames.csv in
+# that order) gives the same rows and, frame for frame, the same image and
+# temporal errors (only the timing may differ); results.md says how the
+# frames were flown.
 add_test(NAME cli.bench.interleave
   COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/bench_interleave'
     '$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,reference --sweep --frames 6 --size 128x96 --fov 30 --interleave --out '${IG_TEST_OUT}/bench_interleave'
     grep -q 'interleaved (each frame flown by every method and knob in turn' '${IG_TEST_OUT}/bench_interleave/results.md'
     grep -q 'one method and knob after the other' '${IG_TEST_OUT}/bench_sweep/results.md'
     rows=$(( $(wc -l < '${IG_TEST_OUT}/bench_sweep/results.csv') - 1 ))
-    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_interleave' --rows $rows --frames 6 --samples 6 --pairs 5 --methods twolevel,reference --same-errors-as '${IG_TEST_OUT}/bench_sweep'")
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_interleave' --rows $rows --frames 6 --samples 6 --pairs 5 --methods twolevel,reference --order interleaved --same-errors-as '${IG_TEST_OUT}/bench_sweep'")
 set_tests_properties(cli.bench.interleave PROPERTIES LABELS cli FIXTURES_REQUIRED bench_sweep_run
   PASS_REGULAR_EXPRESSION "check_bench_output: ok")
 

@@ -9,7 +9,10 @@ frames.csv / samples.csv have one row per method/knob and frame / sampled
 frame, samples.csv with a temporal error exactly where a pair exists.
 With --same-errors-as DIR, samples.csv must equal DIR's in every cell but
 the timing (frame_ms), row for row once both are sorted by method, knob and
-frame: the order the frames were flown in changes no picture.
+frame: the order the frames were flown in changes no picture. --order
+checks frames.csv's row order: sequential (each method and knob's frames
+together, in flight order) or interleaved (each frame flown by every method
+and knob before the next frame, the first of them rotating).
 Prints what it checked; exit 1 on the first failure."""
 import argparse
 import csv
@@ -72,6 +75,27 @@ def check_same_errors(out_dir, other_dir):
     return len(mine)
 
 
+def check_order(out_dir, order, variants, frames):
+    with open(os.path.join(out_dir, "frames.csv"), newline="") as f:
+        rows = [(r["method"], r["knob"], int(r["frame"])) for r in csv.DictReader(f)]
+    if order == "sequential":
+        blocks = [rows[k * frames:(k + 1) * frames] for k in range(variants)]
+        for b in blocks:
+            if len({(m, k) for m, k, _ in b}) != 1 or [fr for _, _, fr in b] != sorted(fr for _, _, fr in b):
+                fail("frames.csv: a method and knob's frames are not together in flight order")
+        return
+    blocks = [rows[i * variants:(i + 1) * variants] for i in range(frames)]
+    first = [(m, k) for m, k, _ in blocks[0]]
+    for i, b in enumerate(blocks):
+        if len({fr for _, _, fr in b}) != 1 or len({(m, k) for m, k, _ in b}) != variants:
+            fail(f"frames.csv: rows {i * variants + 2}..: not one frame flown by every method and knob")
+        rotated = first[i % variants:] + first[:i % variants]
+        if [(m, k) for m, k, _ in b] != rotated:
+            fail(f"frames.csv: frame {b[0][2]} is not flown in the rotated order")
+    if [b[0][2] for b in blocks] != sorted(b[0][2] for b in blocks):
+        fail("frames.csv: the frames are not in flight order")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("out_dir")
@@ -80,6 +104,7 @@ def main():
     ap.add_argument("--samples", type=int, required=True, help="error samples per method/knob")
     ap.add_argument("--methods", required=True, help="comma-separated methods expected, in order, or all (any)")
     ap.add_argument("--pairs", type=int, required=True, help="temporal error pairs per method/knob")
+    ap.add_argument("--order", choices=("sequential", "interleaved"), help="frames.csv's expected row order")
     ap.add_argument("--same-errors-as", metavar="DIR", help="another run whose samples.csv must match but for timing")
     a = ap.parse_args()
     d = a.out_dir
@@ -192,6 +217,9 @@ def main():
     if "temporal error mean / max" not in md:
         fail("results.md lacks the temporal error column")
 
+    if a.order:
+        check_order(d, a.order, a.rows, a.frames)
+        print(f"check_bench_output: frames.csv is {a.order}")
     if a.same_errors_as:
         n = check_same_errors(d, a.same_errors_as)
         print(f"check_bench_output: {n} sampled frames match {a.same_errors_as} but for timing")
