@@ -20,7 +20,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <string>
 #include <vector>
 
@@ -29,6 +28,7 @@
 #include "io/wire/cigi_queries.h"
 #include "load/cigi_request_mix.h"
 #include "session/scene_setup.h"
+#include "stats/timing.h"
 #include "terrain/dem_loader.h"
 #include "terrain/earth_curvature.h"
 #include "terrain/height_pyramid.h"
@@ -36,11 +36,11 @@
 namespace {
 
 using namespace ig::io::wire;
-using Clock = std::chrono::steady_clock;
+using Clock = ig::stats::WallClock;
+using ig::stats::ms_since;
+using ig::stats::process_cpu_ms;
 using ig::load::CigiRequestMix;
 using Load = ig::load::RequestLoad;
-
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // What rendering a frame does to the caches: writes far more than they hold.
 class CacheFlusher {
@@ -58,12 +58,6 @@ class CacheFlusher {
 struct Figures {
   std::vector<double> take_ms, answer_ms, answer_cpu_ms, encode_ms;
 };
-
-double process_cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
 
 void print_row(const char* name, std::vector<double> v) {
   std::sort(v.begin(), v.end());

@@ -33,16 +33,11 @@
 #include "render/terrain_method.h"
 #include "session/scenario_runner.h"
 #include "session/view_step.h"
+#include "stats/timing.h"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double cpu_ms() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
+using Clock = ig::stats::WallClock;
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -107,11 +102,11 @@ void run(const std::string& file, int w, int h, int frames) {
     for (std::size_t r = 0; r < variants.size(); ++r) {
       Variant& v = variants[(r + i) % variants.size()];  // rotated, so no variant always goes first
       ig::render::FrameRenderer& renderer = *shadings.at({v.detail, v.target->samples() == 1}).renderer;
-      const double c0 = cpu_ms();
+      const double c0 = ig::stats::process_cpu_ms();
       const auto t0 = Clock::now();
       const auto result = ig::session::render_view(scene, renderer, camera, *v.target);
-      v.wall.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-      v.cpu.push_back(cpu_ms() - c0);
+      v.wall.push_back(ig::stats::ms_since(t0));
+      v.cpu.push_back(ig::stats::process_cpu_ms() - c0);
       v.fs.push_back(double(result.total.fs_invocations));
       v.vs.push_back(double(result.total.vs_invocations));
     }

@@ -29,6 +29,7 @@
 #include "session/scenario_runner.h"
 #include "stats/frame_log.h"
 #include "stats/image_error.h"
+#include "stats/timing.h"
 
 namespace ig::app {
 namespace {
@@ -50,11 +51,8 @@ constexpr const char* kUsage =
     "temporal_error.png.\n"
     "Exit status: 0 ok, 1 the run failed (or the plot could not be drawn), 2 bad arguments.\n";
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = stats::WallClock;
+using stats::ms_since;
 
 struct Args {
   std::string scenario;
@@ -307,19 +305,18 @@ int run(const Args& args) {
   flight.samples_csv = &samples_csv;
 
   std::vector<BenchRow> rows;
-  auto report = [&](const VariantRun& r, const BenchRow& row, double seconds) {
+  auto report = [&](const VariantRun& r, const BenchRow& row) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
                   "%-36s %d frames: median %.2f ms, p95 %.2f ms, horizon mean %.3f px, max %.0f px, temporal "
                   "%.3f (%.1f s)",
                   r.label().c_str(), row.frames, row.frame_ms_median, row.frame_ms_p95, row.horizon_mean_px,
-                  row.horizon_max_px, row.temporal_error_mean, seconds);
+                  row.horizon_max_px, row.temporal_error_mean, r.seconds());
     progress.line(buf);
   };
   const int n_frames = int(frames.size());
   if (!args.interleave) {
     for (const Variant& v : variants) {
-      const auto t0 = Clock::now();
       VariantRun r(v, flight);
       r.warm_up();
       for (int i = 0; i < n_frames; ++i) {
@@ -327,12 +324,11 @@ int run(const Args& args) {
         progress.step(r.label(), i + 1, n_frames);
       }
       rows.push_back(r.finish());
-      report(r, rows.back(), ms_since(t0) / 1000.0);
+      report(r, rows.back());
     }
   } else {
     // Every variant built first; then each frame flown by all of them, the
     // first of them rotating so that none always follows the same one.
-    const auto t0 = Clock::now();
     std::vector<std::unique_ptr<VariantRun>> runs;
     for (const Variant& v : variants) runs.push_back(std::make_unique<VariantRun>(v, flight));
     for (auto& r : runs) r->warm_up();
@@ -345,7 +341,7 @@ int run(const Args& args) {
       }
     for (auto& r : runs) {
       rows.push_back(r->finish());
-      report(*r, rows.back(), ms_since(t0) / 1000.0);
+      report(*r, rows.back());
     }
   }
   progress.finish();

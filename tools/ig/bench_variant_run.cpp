@@ -3,25 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <stdexcept>
 
 #include "session/scenario_runner.h"
 #include "session/view_step.h"
+#include "stats/timing.h"
 
 namespace ig::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-// CPU time of the whole process (every thread: llvmpipe rasterises on its own).
-double process_cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
-}
-
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+using Clock = stats::WallClock;
+using stats::ms_since;
+using stats::process_cpu_ms;
 
 bool same_knob(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); }
 
@@ -53,15 +46,24 @@ VariantRun::VariantRun(const Variant& variant, const BenchFlight& flight)
   row_.method = variant.method;
   row_.knob = method_->knob();
   row_.default_knob = variant.is_default;
+  spent_ms_ = row_.build_ms;
 }
 
 void VariantRun::warm_up() {
+  const auto t0 = Clock::now();
   session::render_view(*flight_.scene, *renderer_, flight_.camera_at(flight_.frames.front()), *flight_.target);
+  spent_ms_ += ms_since(t0);
 }
 
 void VariantRun::fly(int pos) {
   if (pos <= last_pos_) throw std::logic_error("VariantRun::fly: frame positions must increase");
   last_pos_ = pos;
+  const auto t0 = Clock::now();
+  render_and_compare(pos);
+  spent_ms_ += ms_since(t0);
+}
+
+void VariantRun::render_and_compare(int pos) {
   const BenchFlight& f = flight_;
   const render::Camera camera = f.camera_at(f.frames[pos]);
   const auto t0 = Clock::now();

@@ -72,11 +72,17 @@ class VariantRun {
   void fly(int pos);
   // The row of medians and errors; call once, after the last fly().
   session::BenchRow finish();
+  // Wall time this variant took so far: its build, warm-up and frames
+  // (read-backs and comparisons included), in either flying order.
+  double seconds() const { return spent_ms_ / 1000.0; }
 
  private:
+  void render_and_compare(int pos);
+
   const BenchFlight& flight_;
   Variant variant_;
   session::BenchRow row_;
+  double spent_ms_ = 0.0;
   std::unique_ptr<render::TerrainMethod> method_;
   std::unique_ptr<render::FrameRenderer> renderer_;
   std::string label_;
