@@ -14,8 +14,8 @@
 # stops the script when EGL or the libraries fail. Every run is interleaved
 # (--interleave): at frames of a few ms the GPU's clock drifts during a run,
 # and so it reaches every method alike. On an H100 the runs took about 50,
-# 60, 210 and over 250 s: where one command may run 10 minutes, run
-# 'reduced.*' and 'full.*' as two.
+# 60 and 210 s; full60 was cut off unfinished after 230 s. Where one
+# command may run 10 minutes, run 'reduced.*' and 'full.*' as two.
 set -uo pipefail
 [ $# -ge 3 ] || { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 pack=$(cd "$1" && pwd) dem=$(cd "$2" && pwd) out=$3 only=${4:-.*}
