@@ -48,6 +48,8 @@ FrameLog::FrameLog(const std::string& csv_path) : path_(csv_path), out_(csv_path
 void FrameLog::add_row(const std::vector<Cell>& cells) {
   if (header_.empty()) {
     for (size_t k = 0; k < cells.size(); ++k) {
+      for (size_t j = 0; j < k; ++j)  // a reader would see one of the two
+        if (cells[j].name == cells[k].name) throw std::logic_error("frame log column " + cells[k].name + " twice");
       header_.push_back(cells[k].name);
       out_ << (k ? "," : "") << cells[k].name;
     }

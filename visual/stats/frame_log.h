@@ -1,7 +1,7 @@
 #pragma once
 // Per-frame log (frames.csv, one row per frame and channel) and the run
-// summary (summary.json). Columns are fixed by the first row; every later row
-// must carry the same names in the same order.
+// summary (summary.json). Columns are fixed by the first row, each name once;
+// every later row must carry the same names in the same order.
 
 #include <fstream>
 #include <optional>
