@@ -58,6 +58,7 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
       runner.present();
       present_ms = ms_since(t0);
     }
+    add_pass_times(ch.last);
     auto row = frame_log_row(f, ch, readback_ms, present_ms);
     if (extra) extra(row);
     log_.add_row(row);
@@ -81,6 +82,15 @@ void RunOutputs::frame(ScenarioRunner& runner, const FrameResult& f, bool captur
     else
       std::fprintf(stderr, "\r%s: frame %d  %.1f s elapsed, %.0f ms/frame   ", command_.c_str(), rendered_, elapsed,
                    elapsed * 1000.0 / rendered_);
+  }
+}
+
+void RunOutputs::add_pass_times(const render::ViewResult& view) {
+  for (const auto& p : view.passes) {
+    if (p.ms < 0.0) continue;
+    auto it = std::find_if(pass_ms_.begin(), pass_ms_.end(), [&](const auto& e) { return e.first == p.name; });
+    if (it == pass_ms_.end()) it = pass_ms_.insert(pass_ms_.end(), {p.name, {}});
+    it->second.push_back(p.ms);
   }
 }
 
@@ -182,6 +192,14 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
         {"failed_tiles", w->failed_tiles()},
     };
   }
+  std::string pass_line;
+  for (const auto& [name, ms] : pass_ms_) {
+    const double median = stats::percentiles(ms).median;
+    summary["pass_ms_median"][name] = median;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s%s %.2f", pass_line.empty() ? "" : ", ", name.c_str(), median);
+    pass_line += buf;
+  }
   if (extra.is_object() && extra.contains("pose_intake"))  // where ig serve has always reported it
     extra["pose_intake"]["frames_outside_terrain"] = watch_.frames_outside();
   for (auto it = extra.begin(); extra.is_object() && it != extra.end(); ++it) summary[it.key()] = it.value();
@@ -196,6 +214,9 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
               ft["p95_ms"].get<double>());
   std::printf("%s: outputs in %s (frames.csv, summary.json, %zu PNG%s%s)\n", command_.c_str(), dir_.string().c_str(),
               captured_.size(), captured_.size() == 1 ? "" : "s", plotted ? ", frametime.png" : "");
+  if (!pass_line.empty())
+    std::printf("%s: median ms per pass, each finished before the next (--pass-times): %s\n", command_.c_str(),
+                pass_line.c_str());
   return plotted ? 0 : 1;
 }
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -52,6 +53,9 @@ class RunOutputs {
   // they missed, tiles loaded, frames that waited on an imagery tile.
   long long imagery_frames_held_ = 0, imagery_held_ = 0, imagery_missing_ = 0, imagery_page_ins_ = 0,
             imagery_frames_waited_ = 0;
+  // Timed passes (RunOptions::pass_times): every channel's frames, per pass in the order first drawn.
+  std::vector<std::pair<std::string, std::vector<double>>> pass_ms_;
+  void add_pass_times(const render::ViewResult& view);
 };
 
 }  // namespace ig::session

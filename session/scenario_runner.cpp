@@ -76,6 +76,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
     v.target = make_frame_target(r, r.width, r.height);
     v.method = render::make_method(r.method, *scene_, options_.shader_dir, r.method_options());
     v.renderer = std::make_unique<render::FrameRenderer>(*scene_, *v.method, options_.shader_dir);
+    v.renderer->set_pass_times(options_.pass_times);
     channels_.push_back(std::move(v));
   }
   prefetch_first_window();
@@ -275,6 +276,7 @@ void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult
     row.emplace_back(p.name + "_prims", n(p.primitives));
     row.emplace_back(p.name + "_draws", n(p.draw_calls));
     row.emplace_back(p.name + "_passed", n(p.samples_passed));
+    if (p.ms >= 0.0) row.emplace_back(p.name + "_pass_ms", p.ms);
   }
 }
 

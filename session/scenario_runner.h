@@ -31,6 +31,7 @@ struct RunOptions {
   bool fullscreen = false;
   std::optional<bool> vsync;
   std::string shader_dir;             // "" = gl::default_shader_dir()
+  bool pass_times = false;            // log every pass's own wall time (render::FrameRenderer::set_pass_times)
 };
 
 // One view of the scene. LOD state (the two-level size controller, the
@@ -73,7 +74,8 @@ std::unique_ptr<gl::RenderTarget> make_frame_target(const io::RenderSpec& render
 // The frame's work counters as log columns: totals (vs_invocations,
 // fs_invocations, primitives, draw_calls, upload_bytes), then with per_pass
 // <pass>_vs, <pass>_fs, <pass>_prims, <pass>_draws, <pass>_passed (samples
-// that passed the depth test) for every pass.
+// that passed the depth test) for every pass, and <pass>_pass_ms when the passes
+// were timed.
 void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult& view, bool per_pass);
 
 // One frames.csv row for a channel; wall_ms = pose + render + readback + present.

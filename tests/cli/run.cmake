@@ -34,3 +34,31 @@ ig_real_dem_test(cli.run.sierra_real_dem "real-DEM run"
     grep -q '\"width\": 4097' '${IG_TEST_OUT}/run_sierra/summary.json'
     test -s '${IG_TEST_OUT}/run_sierra/final.png'
     echo sierra ok")
+
+# --pass-times: every pass the frame ran gets its own wall time in frames.csv
+# (<pass>_pass_ms), the passes lie within their stages, and summary.json and
+# the closing line give the medians.
+add_test(NAME cli.run.pass_times
+  COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/run_pass_times'
+    '$<TARGET_FILE:ig>' run '${CMAKE_SOURCE_DIR}/scenarios/default.json' --frames 4 --size 320x240 --pass-times --quiet --out '${IG_TEST_OUT}/run_pass_times' > '${IG_TEST_OUT}/run_pass_times.log'
+    grep -q 'median ms per pass, each finished before the next (--pass-times): level1 [0-9.]*, level0 ' '${IG_TEST_OUT}/run_pass_times.log'
+    python3 - '${IG_TEST_OUT}/run_pass_times' <<'PY'
+import csv, json, sys
+out = sys.argv[1]
+rows = list(csv.DictReader(open(out + '/frames.csv')))
+assert len(rows) == 4, len(rows)
+timed = [c[:-len('_pass_ms')] for c in rows[0] if c.endswith('_pass_ms')]
+drawn = set(p for r in rows for p in r['passes'].split('+'))
+assert drawn <= set(timed) and 'sky' in timed and 'aa' in timed, (timed, drawn)
+for r in rows:
+    ms = {p: float(r[p + '_pass_ms']) for p in timed}
+    assert all(v >= 0 for v in ms.values()), ms
+    terrain = sum(v for p, v in ms.items() if p not in ('sky', 'aa'))
+    assert 0 < terrain <= float(r['terrain_ms']), (terrain, r['terrain_ms'])
+    assert ms['sky'] <= float(r['sky_ms']), (ms['sky'], r['sky_ms'])
+    assert ms['aa'] <= float(r['resolve_ms']), (ms['aa'], r['resolve_ms'])
+summary = json.load(open(out + '/summary.json'))
+assert set(summary['pass_ms_median']) == set(timed), (summary['pass_ms_median'], timed)
+print('pass times ok')
+PY")
+set_tests_properties(cli.run.pass_times PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "pass times ok")

@@ -60,6 +60,9 @@ Args parse_args(const std::vector<std::string>& a) {
       ->check(one_of({"on", "off"}))
       ->option_text("on|off");
   add_shader_dir_option(app, args.run.shader_dir);
+  app.add_flag("--pass-times", args.run.pass_times,
+               "log each pass's own wall time as <pass>_pass_ms in frames.csv: the GL work is finished before and "
+               "after every pass, so the frames themselves take longer (a profile, not a benchmark)");
   app.add_flag("--quiet", args.quiet, "no progress line on the terminal (warnings and the summary lines remain)");
   parse_command_line(app, a);
   if (args.scenario.empty()) throw UsageError("missing SCENARIO.json");

@@ -41,6 +41,11 @@ void PassRecorder::begin(std::string_view pass, bool count_samples) {
   s.pass = index;
   s.count_samples = count_samples;
   s.tally_at_begin = work_tally();
+  s.ms = 0.0;
+  if (timed_) {
+    glFinish();
+    s.start = std::chrono::steady_clock::now();
+  }
   if (supported_)
     for (int q = 0; q < queries_of(count_samples); ++q) glBeginQuery(kTargets[q], s.queries[q].id());
   active_ = true;
@@ -52,6 +57,10 @@ void PassRecorder::end() {
   if (supported_)
     for (int q = 0; q < queries_of(s.count_samples); ++q) glEndQuery(kTargets[q]);
   s.tally_at_end = work_tally();
+  if (timed_) {
+    glFinish();
+    s.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s.start).count();
+  }
   ++used_;
   active_ = false;
 }
@@ -59,7 +68,10 @@ void PassRecorder::end() {
 std::vector<PassWork> PassRecorder::read() {
   if (active_) end();
   std::vector<PassWork> out(names_.size());
-  for (size_t k = 0; k < names_.size(); ++k) out[k].name = names_[k];
+  for (size_t k = 0; k < names_.size(); ++k) {
+    out[k].name = names_[k];
+    if (timed_) out[k].ms = 0.0;
+  }
   for (int k = 0; k < used_; ++k) {
     const Segment& s = segments_[k];
     PassWork& w = out[s.pass];
@@ -72,6 +84,7 @@ std::vector<PassWork> PassRecorder::read() {
       w.primitives += v[2];
       w.samples_passed += v[3];
     }
+    if (timed_) w.ms += s.ms;
     w.draw_calls += s.tally_at_end.draw_calls - s.tally_at_begin.draw_calls;
     w.bytes_uploaded += s.tally_at_end.bytes_uploaded - s.tally_at_begin.bytes_uploaded;
   }

@@ -7,6 +7,7 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -38,6 +39,9 @@ struct PassWork {
   std::uint64_t samples_passed = 0;
   std::uint64_t draw_calls = 0;
   std::uint64_t bytes_uploaded = 0;
+  // Wall milliseconds from the work before the pass being done to the pass
+  // being done, with pass timing on (PassRecorder::set_timed); -1 with it off.
+  double ms = -1.0;
 };
 
 // Pipeline statistics around consecutive passes of a frame. The passes are
@@ -63,6 +67,11 @@ class PassRecorder {
   // Per pass, in construction order (passes that did not run read 0).
   std::vector<PassWork> read();
   const std::vector<std::string>& pass_names() const { return names_; }
+  // Pass timing: glFinish before and after every pass, so each pass's wall
+  // time is its own work alone (GL timer queries do not time passes on
+  // llvmpipe). The waits serialise the frame, which then takes longer.
+  void set_timed(bool on) { timed_ = on; }
+  bool timed() const { return timed_; }
   // Another set of passes (the renderer's method changed).
   void reset_passes(std::vector<std::string> pass_names) {
     if (active_) end();
@@ -76,12 +85,15 @@ class PassRecorder {
     bool count_samples = true;
     std::array<Query, 4> queries;  // vertex and fragment invocations, primitives, samples passed
     WorkTally tally_at_begin, tally_at_end;
+    std::chrono::steady_clock::time_point start;
+    double ms = 0.0;  // timed passes only
   };
   std::vector<std::string> names_;
   std::vector<Segment> segments_;  // grows to the most stretches a frame used; reused
   int used_ = 0;
   bool active_ = false;
   bool supported_ = false;
+  bool timed_ = false;
 };
 
 }  // namespace ig::gl

@@ -65,6 +65,9 @@ class FrameRenderer {
   // the picture is the same, hidden faces cost no fragment work). On by default;
   // off draws every face, as for an eye under the surface.
   void set_back_face_culling(bool on) { back_face_culling_ = on; }
+  // Each pass's own wall time in ViewResult::passes (gl::PassRecorder::set_timed):
+  // a diagnostic that finishes the GL work around every pass, so frames take longer.
+  void set_pass_times(bool on) { recorder_.set_timed(on); }
   // Draw with another method from the next frame on (a rebuild at a frame
   // boundary): the sky program and the rest are kept, not recompiled; the
   // shading settings are taken again, as the constructor takes them.

@@ -153,3 +153,45 @@ TEST(WorkCounters, PassRecorderRejectsUndeclaredPasses) {
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0].draw_calls, 0u);
 }
+
+// Pass timing: each pass's own wall time lies within the stage that ran it
+// (terrain passes and deferred shading in the terrain stage, the sky and the
+// post pass in theirs), and timing changes neither the work nor the picture.
+TEST(WorkCounters, TimedPassesLieWithinTheirStages) {
+  struct Frame {
+    ig::render::ViewResult view;
+    std::vector<std::uint8_t> rgba;
+  };
+  auto second_frame = [](const std::string& method, bool timed) {
+    auto scenario = ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json");
+    scenario.render.antialiasing = "fxaa";
+    RunOptions o = options(method);
+    o.pass_times = timed;
+    ScenarioRunner runner(scenario, o);
+    runner.render_frame(0);
+    runner.render_frame(1);
+    return Frame{runner.channels().front().last, runner.channels().front().target->read_rgba()};
+  };
+  for (const std::string method : {"twolevel", "cdlod"}) {
+    const Frame timed = second_frame(method, true), untimed = second_frame(method, false);
+    const auto& t = timed.view;
+    ASSERT_EQ(t.passes.size(), untimed.view.passes.size()) << method;
+    double terrain_passes_ms = 0.0;
+    for (size_t k = 0; k < t.passes.size(); ++k) {
+      const auto& p = t.passes[k];
+      EXPECT_GE(p.ms, 0.0) << method << " " << p.name;
+      EXPECT_EQ(untimed.view.passes[k].ms, -1.0) << method << " " << p.name;
+      EXPECT_EQ(p.fs_invocations, untimed.view.passes[k].fs_invocations) << method << " " << p.name;
+      EXPECT_EQ(p.samples_passed, untimed.view.passes[k].samples_passed) << method << " " << p.name;
+      if (p.name == "sky")
+        EXPECT_LE(p.ms, t.timings.sky_ms) << method;
+      else if (p.name == "aa")
+        EXPECT_LE(p.ms, t.timings.resolve_ms) << method;
+      else
+        terrain_passes_ms += p.ms;
+    }
+    EXPECT_GT(terrain_passes_ms, 0.0) << method;
+    EXPECT_LE(terrain_passes_ms, t.timings.terrain_ms) << method;
+    EXPECT_EQ(timed.rgba, untimed.rgba) << method;
+  }
+}
