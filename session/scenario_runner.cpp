@@ -110,6 +110,11 @@ render::Camera ScenarioRunner::camera_for(const io::Pose& pose, const ChannelVie
   return c;
 }
 
+// The members' GL objects are deleted after this body, in this runner's context.
+ScenarioRunner::~ScenarioRunner() {
+  if (context_) context_->make_current();
+}
+
 FrameResult ScenarioRunner::render_frame(int k) {
   const double t = k * scenario_.time_step_s;
   const auto t0 = Clock::now();
@@ -118,6 +123,7 @@ FrameResult ScenarioRunner::render_frame(int k) {
 }
 
 FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose& pose, double pose_ms) {
+  context_->make_current();
   FrameResult f;
   f.frame = k;
   f.sim_time_s = sim_time_s;
@@ -281,6 +287,7 @@ void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult
 }
 
 void ScenarioRunner::rebuild_method(const options::TwoLevelOptions& twolevel) {
+  context_->make_current();
   scenario_.render.twolevel = twolevel;
   for (auto& ch : channels_) {
     auto method = render::make_method(scenario_.render.method, *scene_, options_.shader_dir, scenario_.render.method_options());
@@ -290,6 +297,7 @@ void ScenarioRunner::rebuild_method(const options::TwoLevelOptions& twolevel) {
 }
 
 void ScenarioRunner::present() {
+  context_->make_current();
   if (!channels_.empty()) {
     const auto& t = *channels_.front().target;
     context_->present(t.fbo(), t.width(), t.height());

@@ -86,7 +86,13 @@ class ScenarioRunner {
  public:
   // Loads the terrain, creates its own GL context and every GPU resource.
   // Throws with a one-line reason (bad file, no GL 4.5, unknown method...).
+  // Several runners may live on one thread: each makes its own context
+  // current when it renders, rebuilds, presents or is destroyed, so read a
+  // runner's targets after its own render, before another runner's.
   ScenarioRunner(io::Scenario scenario, const RunOptions& options);
+  ~ScenarioRunner();
+  ScenarioRunner(const ScenarioRunner&) = delete;
+  ScenarioRunner& operator=(const ScenarioRunner&) = delete;
 
   const io::Scenario& scenario() const { return scenario_; }
   const terrain::Heightfield& heightfield() const { return heightfield_; }

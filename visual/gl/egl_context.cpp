@@ -3,6 +3,7 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <atomic>
 #include <cstdio>
 
 #include "gl/gl_context.h"
@@ -44,25 +45,36 @@ class EglContext final : public GlContext {
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       throw GlError("EGL: eglMakeCurrent without a surface failed");
     read_strings();
+    ++live_contexts();
   }
 
   ~EglContext() override {
-    if (display_ != EGL_NO_DISPLAY) {
-      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-      if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-      eglTerminate(display_);
-    }
+    if (display_ == EGL_NO_DISPLAY) return;
+    if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+    // Every context of the process shares the display, and terminating it
+    // would end the others too: the last one terminates it.
+    if (--live_contexts() == 0) eglTerminate(display_);
   }
 
   bool headless() const override { return true; }
   bool should_close() override { return false; }
   void present(unsigned, int, int) override {}
+  void make_current() override {
+    if (eglGetCurrentContext() != context_ && !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw GlError("EGL: eglMakeCurrent of this context failed (error 0x" + hex(eglGetError()) + ")");
+  }
 
  private:
   static std::string hex(EGLint v) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "%x", unsigned(v));
     return buf;
+  }
+
+  static std::atomic<int>& live_contexts() {
+    static std::atomic<int> n{0};
+    return n;
   }
 
   static EGLDisplay open_device_display() {

@@ -31,6 +31,10 @@ class GlContext {
   // Show the given framebuffer object's colour attachment 0 and swap buffers
   // (no-op headless).
   virtual void present(unsigned fbo, int width, int height) = 0;
+  // Makes this context the thread's current one (a context is current from
+  // its creation; with several on one thread, whoever draws makes its own
+  // current first). Cheap when it already is.
+  virtual void make_current() = 0;
   const std::string& gl_version() const { return version_; }
   const std::string& gl_renderer() const { return renderer_; }
 

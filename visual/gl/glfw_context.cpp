@@ -53,6 +53,9 @@ class GlfwContext final : public GlContext {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glfwSwapBuffers(window_);
   }
+  void make_current() override {
+    if (glfwGetCurrentContext() != window_) glfwMakeContextCurrent(window_);
+  }
 
  private:
   GLFWwindow* window_ = nullptr;
