@@ -7,14 +7,13 @@
 #include "capture/png_writer.h"
 #include "session/frametime_plot.h"
 #include "session/process_memory.h"
+#include "stats/timing.h"
 #include "terrain/paged_heights.h"
 
 namespace ig::session {
 namespace {
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = stats::WallClock;
+using stats::ms_since;
 std::string capture_name(const ChannelView& ch, int frame, double t) {
   char buf[128];
   std::snprintf(buf, sizeof buf, "capture_%s_t%07.3fs_f%06d.png", ch.spec.name.c_str(), t, frame);

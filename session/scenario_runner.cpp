@@ -1,7 +1,6 @@
 #include "session/scenario_runner.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "lod/level0_budget.h"
@@ -11,13 +10,12 @@
 #include "terrain/paged_heights.h"
 #include "terrain/ray_cast.h"
 #include "session/view_step.h"
+#include "stats/timing.h"
 
 namespace ig::session {
 namespace {
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = stats::WallClock;
+using stats::ms_since;
 }  // namespace
 
 ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "stats/timing.h"
+
 namespace ig::gl {
 namespace {
 constexpr std::array<GLenum, 4> kTargets = {GL_VERTEX_SHADER_INVOCATIONS, GL_FRAGMENT_SHADER_INVOCATIONS,
@@ -44,7 +46,7 @@ void PassRecorder::begin(std::string_view pass, bool count_samples) {
   s.ms = 0.0;
   if (timed_) {
     glFinish();
-    s.start = std::chrono::steady_clock::now();
+    s.start = stats::WallClock::now();
   }
   if (supported_)
     for (int q = 0; q < queries_of(count_samples); ++q) glBeginQuery(kTargets[q], s.queries[q].id());
@@ -59,7 +61,7 @@ void PassRecorder::end() {
   s.tally_at_end = work_tally();
   if (timed_) {
     glFinish();
-    s.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s.start).count();
+    s.ms = stats::ms_since(s.start);
   }
   ++used_;
   active_ = false;

@@ -7,13 +7,13 @@
 #include <epoxy/gl.h>
 
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "gl/gl_objects.h"
+#include "stats/timing.h"
 
 namespace ig::gl {
 
@@ -71,7 +71,6 @@ class PassRecorder {
   // time is its own work alone (GL timer queries do not time passes on
   // llvmpipe). The waits serialise the frame, which then takes longer.
   void set_timed(bool on) { timed_ = on; }
-  bool timed() const { return timed_; }
   // Another set of passes (the renderer's method changed).
   void reset_passes(std::vector<std::string> pass_names) {
     if (active_) end();
@@ -85,7 +84,7 @@ class PassRecorder {
     bool count_samples = true;
     std::array<Query, 4> queries;  // vertex and fragment invocations, primitives, samples passed
     WorkTally tally_at_begin, tally_at_end;
-    std::chrono::steady_clock::time_point start;
+    stats::WallClock::time_point start;
     double ms = 0.0;  // timed passes only
   };
   std::vector<std::string> names_;

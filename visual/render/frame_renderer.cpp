@@ -1,16 +1,13 @@
 #include "render/frame_renderer.h"
 
-#include <chrono>
-
 #include "gl/frame_state.h"
+#include "stats/timing.h"
 #include "terrain/back_faces_hidden.h"
 
 namespace ig::render {
 namespace {
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = stats::WallClock;
+using stats::ms_since;
 // The work counters' passes: the method's, deferred shading's, the sky and
 // the anti-aliasing post pass (0 where the frame has none).
 std::vector<std::string> pass_names_of(const TerrainMethod& method) {
