@@ -80,8 +80,12 @@ std::vector<std::uint8_t> read_png(const char* path, int& w, int& h, int& bands)
   h = GDALGetRasterYSize(ds);
   bands = GDALGetRasterCount(ds);
   std::vector<std::uint8_t> px(std::size_t(w) * h * bands);
-  GDALDatasetRasterIO(ds, GF_Read, 0, 0, w, h, px.data(), w, h, GDT_Byte, bands, nullptr, 0, 0, 0);
+  const CPLErr err = GDALDatasetRasterIO(ds, GF_Read, 0, 0, w, h, px.data(), w, h, GDT_Byte, bands, nullptr, 0, 0, 0);
   GDALClose(ds);
+  if (err != CE_None) {
+    std::fprintf(stderr, "%s: %s\n", path, CPLGetLastErrorMsg());
+    return {};
+  }
   return px;
 }
 

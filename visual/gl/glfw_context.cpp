@@ -1,7 +1,6 @@
 // Windowed context through GLFW (needs an X display; xvfb-run in CI).
 #include <epoxy/gl.h>
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+#include <GLFW/glfw3.h>  // GLFW_INCLUDE_NONE comes from visual/CMakeLists.txt
 
 #include "gl/gl_context.h"
 

@@ -120,8 +120,11 @@ void check_random_views(double earth_radius_m) {
     std::vector<std::uint8_t> hidden;
     hidden_total += occlusion.mark_hidden(eye, earth_radius_m, 5.0, boxes, hidden, over);
     total += (long long)boxes.size();
-    for (size_t b = 0; b < boxes.size(); ++b)
-      if (hidden[b]) ASSERT_NO_FATAL_FAILURE(expect_really_hidden(hf, pyramid, eye, earth_radius_m, boxes[b], rng));
+    for (size_t b = 0; b < boxes.size(); ++b) {
+      if (hidden[b]) {
+        ASSERT_NO_FATAL_FAILURE(expect_really_hidden(hf, pyramid, eye, earth_radius_m, boxes[b], rng));
+      }
+    }
   }
   std::printf("%lld of %lld blocks hidden\n", hidden_total, total);
   EXPECT_GT(hidden_total, total / 20) << "low eyes over rough terrain should see past few blocks";

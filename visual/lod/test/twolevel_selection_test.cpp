@@ -33,7 +33,12 @@ constexpr double kFovY = 60.0;
 struct World {
   ig::terrain::Heightfield hf;
   ig::terrain::HeightPyramid pyramid;
-  World() : hf(ig::terrain::generate_synthetic_terrain(ig::options::SyntheticTerrainOptions{.size = 513})), pyramid(hf) {}
+  World() : hf(ig::terrain::generate_synthetic_terrain(options_of_size(513))), pyramid(hf) {}
+  static ig::options::SyntheticTerrainOptions options_of_size(int size) {
+    ig::options::SyntheticTerrainOptions o;
+    o.size = size;
+    return o;
+  }
 
   TwoLevelSelector selector(ig::options::TwoLevelOptions options) const {
     auto level0 = ig::lod::z_ordered(ig::lod::build_level0_mesh(hf, {options.level0_budget}));

@@ -147,7 +147,7 @@ TEST_F(PagedDem, RaggedSizesGiveTheSamePyramidAndOverview) {
   // Odd level sizes and partial edge tiles in both directions (1001 x 701
   // samples: 1000 and 700 cells, levels 500 x 350, 250 x 175, 125 x 88, ...),
   // and 1000 x 701 (odd cells in x).
-  for (const auto [w, h] : {std::pair{1001, 701}, {1000, 701}}) {
+  for (const auto& [w, h] : {std::pair{1001, 701}, {1000, 701}}) {
     const std::string path = write_dem(dir_, w, h);
     const Heightfield whole = load_dem(path);
     DemLoadOptions o;
