@@ -59,7 +59,7 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   const std::string path = "terrain";
   require_object(j, path);
   check_keys(j, path, {"file", "encoding", "scale", "offset", "spacing_m", "generator", "height_window", "texture_limit",
-                     "memory_budget_mb", "imagery_budget_mb", "wait_for_pages", "vertical_datum", "void_fill"});
+                     "memory_budget_mb", "imagery_budget_mb", "wait_for_pages", "vertical_datum", "void_fill", "water"});
   const bool has_file = j.contains("file");
   const bool has_gen = j.contains("generator");
   if (has_file && has_gen) fail(path, "exactly one of \"file\" or \"generator\" may be given, not both");
@@ -79,6 +79,9 @@ TerrainSpec parse_terrain(const json& j, const Context& ctx) {
   if (j.contains("imagery_budget_mb"))
     t.imagery_budget_mb =
         static_cast<int>(get_integer(j["imagery_budget_mb"], child(path, "imagery_budget_mb"), 1, 1 << 20));
+  if (j.contains("water"))
+    t.water = parse_water(j["water"], child(path, "water"),
+                          [&ctx](const json& v, const std::string& p) { return get_file_path(v, p, ctx); });
   if (has_gen) {
     for (const char* k : {"encoding", "scale", "offset", "spacing_m", "vertical_datum", "void_fill"}) {
       if (j.contains(k)) {

@@ -15,6 +15,7 @@
 #include "options/terrain_options.h"
 #include "options/method_options.h"
 #include "options/twolevel_options.h"
+#include "options/water_options.h"
 
 namespace ig::io {
 
@@ -45,6 +46,9 @@ struct TerrainSpec : options::DemLoadOptions {
   // Memory budget for imagery beyond the texture limit (paged from GDAL in
   // tiles, terrain/imagery_loader.h; raised to what the imagery window needs).
   int imagery_budget_mb = 512;
+  // Where the water is (terrain.water): found in the DEM ("auto"), none
+  // ("off"), or the user's water file (water/water_setup.h).
+  options::WaterOptions water;
 };
 
 struct RenderSpec {

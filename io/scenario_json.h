@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -74,6 +75,10 @@ std::string get_name(const json& j, const std::string& path);
 // terrain.generator and terrain.void_fill (scenario_terrain.cpp).
 options::SyntheticTerrainOptions parse_generator(const json& j, const std::string& path);
 options::VoidFillOptions parse_void_fill(const json& j, const std::string& path);
+// terrain.water: "auto", "off", a path, or {"file": path, "level_attribute": name};
+// file_path resolves a path value as the scenario's other file keys are.
+options::WaterOptions parse_water(const json& j, const std::string& path,
+                                  const std::function<std::string(const json&, const std::string&)>& file_path);
 
 // path (scenario_path.cpp).
 PathSpec parse_path(const json& j);

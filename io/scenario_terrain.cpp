@@ -1,4 +1,4 @@
-// The scenario's terrain.generator and terrain.void_fill sections
+// The scenario's terrain.generator, terrain.void_fill and terrain.water sections
 // (docs/scenario.md).
 #include "io/scenario_json.h"
 
@@ -48,6 +48,29 @@ options::VoidFillOptions parse_void_fill(const json& j, const std::string& path)
     f.smoothing_iterations = static_cast<int>(get_integer(j["smoothing_iterations"], child(path, "smoothing_iterations"),
                                                           0, options::VoidFillOptions::kMaxVoidSmoothing));
   return f;
+}
+
+options::WaterOptions parse_water(const json& j, const std::string& path,
+                                  const std::function<std::string(const json&, const std::string&)>& file_path) {
+  options::WaterOptions w;
+  if (j.is_string()) {
+    const std::string v = j.get<std::string>();
+    if (v == "auto" || v == "off") {
+      w.source = v == "auto" ? options::WaterSource::Auto : options::WaterSource::Off;
+      return w;
+    }
+    w.source = options::WaterSource::File;
+    w.file = file_path(j, path);
+    return w;
+  }
+  if (!j.is_object())
+    fail(path, "must be \"auto\", \"off\", a water file's path or {\"file\": ..., \"level_attribute\": ...}" + got(j));
+  check_keys(j, path, {"file", "level_attribute"});
+  if (!j.contains("file")) fail(child(path, "file"), "is required in the object form");
+  w.source = options::WaterSource::File;
+  w.file = file_path(j["file"], child(path, "file"));
+  if (j.contains("level_attribute")) w.level_attribute = get_nonempty_string(j["level_attribute"], child(path, "level_attribute"));
+  return w;
 }
 
 }  // namespace ig::io::scenario_json

@@ -8,19 +8,23 @@
 #include "terrain/earth_curvature.h"
 #include "terrain/georef.h"
 #include "terrain/synthetic_terrain.h"
+#include "water/water_setup.h"
 
 namespace ig::session {
 
 terrain::Heightfield load_terrain(const io::TerrainSpec& spec) {
+  terrain::Heightfield hf;
   if (spec.generator) {
     const auto& g = *spec.generator;
-    terrain::Heightfield hf = terrain::generate_synthetic_terrain(g);
+    hf = terrain::generate_synthetic_terrain(g);
     if (g.origin_lat_lon)
       hf.georef = terrain::make_geographic_georef((*g.origin_lat_lon)[0], (*g.origin_lat_lon)[1], hf.spacing_x_m,
                                                   hf.spacing_y_m);
-    return hf;
+  } else {
+    hf = terrain::load_dem(*spec.file, spec);  // its DemLoadOptions part
   }
-  return terrain::load_dem(*spec.file, spec);  // its DemLoadOptions part
+  water::place_water(hf, spec.water);
+  return hf;
 }
 
 io::PathSpec place_path(const io::PathSpec& path, const terrain::Heightfield& hf) {

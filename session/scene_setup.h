@@ -1,6 +1,6 @@
 #pragma once
 // Turning a scenario's declarative parts into things the IG can use: the
-// heightfield (file or generator) and the ownship path in terrain-local
+// heightfield (file or generator) with its water and the ownship path in terrain-local
 // metres above sea level.
 
 #include <functional>
@@ -14,7 +14,9 @@
 
 namespace ig::session {
 
-// Throws terrain::DemError / std::invalid_argument with a one-line reason.
+// The heightfield with its water (terrain.water, water/water_setup.h). Throws
+// terrain::DemError / water::WaterFileError / std::invalid_argument with a
+// one-line reason.
 terrain::Heightfield load_terrain(const io::TerrainSpec& spec);
 
 // Keys converted to local ENU metres above sea level: geodetic keys through

@@ -15,6 +15,10 @@
 
 #include "options/terrain_options.h"
 
+namespace ig::water {
+class WaterMap;  // water/water_map.h
+}
+
 namespace ig::terrain {
 
 struct PagedHeights;  // terrain/paged_heights.h
@@ -54,6 +58,10 @@ struct Heightfield {
   std::int64_t deep_void_count = 0;
 
   std::optional<GeoReference> georef;
+  // Where the terrain has water (terrain.water, water/water_setup.h): set
+  // only when it has at least one body; the sample heights under it are its
+  // levels.
+  std::shared_ptr<const water::WaterMap> water;
   std::string source;  // file path, folder of tiles or generator description, for logs
   int source_tiles = 0;       // > 0: mosaicked from this many tiles (terrain/dem_mosaic.h)
   int reprojected_tiles = 0;  // of which reprojected to the first tile's CRS
