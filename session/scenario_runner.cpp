@@ -133,6 +133,7 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   const auto imagery_before = imagery ? imagery->stats() : render::ImageryWindowTexture::Stats{};
   const auto imagery_pages_before = imagery ? imagery->cache().stats() : terrain::RgbTileCache::Stats{};
   update_sun(sim_time_s, pose.position);
+  scene_->set_time(sim_time_s);  // the waves drift with the scene's clock
   f.visibility_m = scene_->shading().fog_visibility_m;
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();

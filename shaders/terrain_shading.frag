@@ -3,7 +3,8 @@
 // function of its DEM texture coordinate (sample space), the coordinate's
 // screen derivatives (texture filtering) and its distance only: per-pixel
 // normal (central differences) and height at full resolution, a height and
-// slope colour ramp (or an imagery texture), one directional light, fog. So
+// slope colour ramp (or an imagery texture), one directional light, water
+// where the scene has it, fog. So
 // methods differ only in where each pixel's coordinate lands, and the colour
 // can be computed in the terrain pass (shade_forward.frag) or from those
 // values stored per pixel, once per pixel (shade_deferred.frag,
@@ -14,8 +15,6 @@ uniform vec2 u_height_range;    // DEM min, max (m)
 uniform vec3 u_sun_dir;         // towards the directional light (the sun, or the twilight sky), normalised
 uniform vec3 u_light_color;     // its RGB; with u_ambient from the sun's elevation (environment/sky_light.h)
 uniform vec3 u_ambient;         // light from the whole sky, RGB
-uniform vec3 u_fog_color;
-uniform float u_fog_k;          // fog factor 1 - exp(-(k d)^2); 0 = no fog
 
 // The DEM's height at s, bilinear: height_at_window.frag (through a
 // full-resolution window, over an overview) or height_at_whole.frag (the
@@ -38,6 +37,13 @@ vec3 ramp(float h01, float slope) {
   return mix(c, snow, smoothstep(snow_line, snow_line + 0.06, h01));
 }
 
+// Water over the land where the scene has it and shades in the terrain pass:
+// water.frag; water_none.frag (the land unchanged) for a scene without
+// water, and with deferred shading, whose water has its own pass
+// (water_shade.frag).
+vec3 water_over(vec3 land, vec2 s, vec2 s_dx, vec2 s_dy, float h);
+// The distance fog (fog.frag).
+vec3 fogged(vec3 color, float dist);
 // The surface colour before light: ground_plain.frag or ground_detail.frag
 // (render/terrain_scene.h, TerrainScene::shading_stages).
 vec3 surface_albedo(vec2 s, vec2 s_dx, vec2 s_dy, float h01, float slope);
@@ -50,10 +56,10 @@ vec3 shade_at(vec2 s, vec2 s_dx, vec2 s_dy, float dist) {
   vec3 n = normalize(vec3(-d.x / (2.0 * u_spacing.x), -d.y / (2.0 * u_spacing.y), 1.0));
   float slope = 1.0 - n.z;
   float span = max(u_height_range.y - u_height_range.x, 1.0);
-  float h01 = clamp((height_at(s) - u_height_range.x) / span, 0.0, 1.0);
+  float h = height_at(s);
+  float h01 = clamp((h - u_height_range.x) / span, 0.0, 1.0);
   vec3 albedo = surface_albedo(s, s_dx, s_dy, h01, clamp(slope * 3.0, 0.0, 1.0));
   float diffuse = max(dot(n, u_sun_dir), 0.0);
-  vec3 color = albedo * (u_ambient + u_light_color * diffuse);
-  float fog = 1.0 - exp(-(u_fog_k * dist) * (u_fog_k * dist));
-  return mix(color, u_fog_color, fog);
+  vec3 color = water_over(albedo * (u_ambient + u_light_color * diffuse), s, s_dx, s_dy, h);
+  return fogged(color, dist);
 }

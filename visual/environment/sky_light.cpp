@@ -97,7 +97,8 @@ SkyLight sky_light_for(const glm::vec3& sun_direction, const options::ShadingOpt
   // (its centre 0.3 deg below the apparent horizon).
   const glm::vec3 transmission = sun_transmission(e);
   const float disc_visible = float(glm::smoothstep(-0.3, 0.3, e));
-  s.light_colour = glm::clamp(0.85f * transmission * disc_visible + twilight, 0.0f, 1.0f);
+  s.sun_light = 0.85f * transmission * disc_visible;
+  s.light_colour = glm::clamp(s.sun_light + twilight, 0.0f, 1.0f);
   const glm::vec3 white_disc(1.0f, 0.97f, 0.9f);
   s.sun_disc = white_disc * transmission / std::max({transmission.r, transmission.g, transmission.b});
 

@@ -35,6 +35,8 @@ struct SkyLight {
   glm::vec3 sky_horizon{0.0f};                  // sky at the horizon; also the fog colour
   glm::vec3 horizon_glow{0.0f};                 // added to the sky towards the sun, low on the horizon
   glm::vec3 sun_disc{0.0f};                     // colour of the sun's disc
+  glm::vec3 sun_light{0.0f};                    // the sun's own light (no twilight): 0 once the disc has set;
+                                                // what a water surface mirrors in its glint
 
   // Luma of the light on level ground (normal straight up): ambient plus
   // the directional light at its elevation.

@@ -7,8 +7,14 @@
 
 namespace ig::gl {
 
-void DeferredShadePass::run(const RenderTarget& target, const ShaderProgram& program, PassRecorder& recorder) const {
-  target.bind_color_only();  // the surface targets are read, not written
+void DeferredShadePass::run(const RenderTarget& target, const ShaderProgram& program, PassRecorder& recorder,
+                            bool water_marks) const {
+  // The surface targets are read, not written.
+  if (water_marks) {
+    target.bind_color_and_water_marks();
+  } else {
+    target.bind_color_only();
+  }
   program.use();
   glBindTextureUnit(unit(TextureUnit::kSurface), target.surface_texture());
   glBindTextureUnit(unit(TextureUnit::kFootprint), target.footprint_texture());
@@ -23,6 +29,7 @@ void DeferredShadePass::run(const RenderTarget& target, const ShaderProgram& pro
   draw_fullscreen_triangle(empty_vao_, recorder, "shade");
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   use_frame_depth_test();
+  if (water_marks) target.bind_color_only();
 }
 
 }  // namespace ig::gl

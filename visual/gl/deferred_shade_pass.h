@@ -15,10 +15,12 @@ class DeferredShadePass {
  public:
   DeferredShadePass() : empty_vao_(create_vertex_array()) {}
   // Into `target` (drawn with its surface targets), with `program`, whose
-  // shading uniforms the caller has set; recorded as pass "shade". Leaves
-  // the target bound with its colour as the only output and the frame's
-  // depth test.
-  void run(const RenderTarget& target, const ShaderProgram& program, PassRecorder& recorder) const;
+  // shading uniforms the caller has set; recorded as pass "shade". With
+  // water_marks the program's second output goes to the target's water marks
+  // (RenderTarget::use_water_marks). Leaves the target bound with its colour
+  // as the only output and the frame's depth test.
+  void run(const RenderTarget& target, const ShaderProgram& program, PassRecorder& recorder,
+           bool water_marks = false) const;
 
  private:
   VertexArray empty_vao_;  // the full-screen triangle needs no vertices

@@ -116,6 +116,42 @@ void RenderTarget::bind_output_with_mask() const {
   glViewport(0, 0, width_, height_);
 }
 
+void RenderTarget::use_water_marks() const {
+  if (!water_marks_) {
+    if (samples_ > 1) throw GlError("water marks need a single-sampled frame");
+    water_marks_ = create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(water_marks_.id(), 1, GL_R8, width_, height_);
+    glTextureParameteri(water_marks_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(water_marks_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glNamedFramebufferTexture(drawing_fbo(), GL_COLOR_ATTACHMENT3, water_marks_.id(), 0);
+    check_complete(drawing_fbo(), width_, height_, 1);
+  }
+  // Pixels the shading pass leaves (sky) must not keep last frame's marks.
+  const GLubyte zero = 0;
+  glClearTexImage(water_marks_.id(), 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
+}
+
+void RenderTarget::bind_color_and_water_marks() const {
+  const GLuint fbo = drawing_fbo();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT3};
+  glNamedFramebufferDrawBuffers(fbo, 2, outputs);
+  glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::bind_with_water_mask() const {
+  if (!water_fbo_) {
+    water_fbo_ = create_framebuffer();
+    water_mask_ = create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(water_mask_.id(), 1, GL_DEPTH_COMPONENT16, width_, height_);
+    glNamedFramebufferTexture(water_fbo_.id(), GL_COLOR_ATTACHMENT0, drawn_color_texture(), 0);
+    glNamedFramebufferTexture(water_fbo_.id(), GL_DEPTH_ATTACHMENT, water_mask_.id(), 0);
+    check_complete(water_fbo_.id(), width_, height_, 1);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, water_fbo_.id());
+  glViewport(0, 0, width_, height_);
+}
+
 void RenderTarget::resolve() const {
   if (samples_ <= 1) return;
   // Colour: the samples' mean (a box filter over the pixel); depth cannot be

@@ -54,6 +54,16 @@ class RenderTarget {
   // frame's depth is left as drawn), which the pass may fill with a mask of
   // the pixels to work on and test against.
   void bind_output_with_mask() const;
+  // Deferred shading in a scene with water: a single-channel target the
+  // shading pass marks water in beside the colour (made on first use, each
+  // call clears it for a new frame), and that pass's binding with it.
+  void use_water_marks() const;
+  void bind_color_and_water_marks() const;
+  GLuint water_marks_texture() const { return water_marks_.id(); }
+  // The water pass: the colour the passes drew with a depth buffer of the
+  // pass's own (made on first use; the frame's depth is left as drawn) for
+  // its mask of the pixels that may hold water.
+  void bind_with_water_mask() const;
   // The picture: the single-sampled framebuffer and its textures.
   GLuint fbo() const { return fbo_.id(); }
   GLuint color_texture() const { return color_.id(); }
@@ -89,6 +99,9 @@ class RenderTarget {
   mutable Texture surface_, footprint_;
   mutable Framebuffer masked_output_fbo_;
   mutable Texture output_mask_;
+  mutable Texture water_marks_;
+  mutable Framebuffer water_fbo_;
+  mutable Texture water_mask_;
 };
 
 // The largest sample count the context offers (GL_MAX_SAMPLES).

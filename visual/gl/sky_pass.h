@@ -1,6 +1,7 @@
 #pragma once
 // The sky: one full-screen triangle drawn after the terrain, only where the
-// depth buffer still holds the clear value (shaders/sky.vert, sky.frag).
+// depth buffer still holds the clear value (shaders/sky.vert, sky.frag,
+// sky_colour.frag).
 
 #include <string>
 
@@ -12,6 +13,10 @@
 #include "gl/work_counters.h"
 
 namespace ig::gl {
+
+// The uniforms of shaders/sky_colour.frag: the sky a program draws or
+// mirrors (the sky pass, water).
+void set_sky_colours(const ShaderProgram& program, const environment::SkyLight& sky);
 
 class SkyPass {
  public:

@@ -18,6 +18,10 @@ enum class TextureUnit : int {
   kSurface = 9,         // deferred shading: each pixel's surface coordinate and distance
   kFootprint = 10,      // deferred shading: the coordinate's screen derivatives
   kHeightDifferences = 11,  // each sample's central differences of height (the shading's normal)
+  kWaterShare = 12,     // the share of water around each sample (scenes with water)
+  kWaves = 13,          // the water's wave slopes (scenes with water)
+  kWaterMarks = 14,     // deferred shading's marks of where water may be (the water pass's mask)
+  kWaterPresence = 15,  // where water may be, coarsely (scenes with water)
 };
 
 constexpr int unit(TextureUnit u) { return static_cast<int>(u); }

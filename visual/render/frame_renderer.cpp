@@ -8,11 +8,13 @@ namespace ig::render {
 namespace {
 using Clock = stats::WallClock;
 using stats::ms_since;
-// The work counters' passes: the method's, deferred shading's, the sky and
-// the anti-aliasing post pass (0 where the frame has none).
-std::vector<std::string> pass_names_of(const TerrainMethod& method) {
+// The work counters' passes: the method's, deferred shading's, its water
+// pass (scenes with water only), the sky and the anti-aliasing post pass (0
+// where the frame has none).
+std::vector<std::string> pass_names_of(const TerrainMethod& method, const TerrainScene& scene) {
   auto names = method.pass_names();
   names.push_back("shade");
+  if (scene.has_water()) names.push_back("water");
   names.push_back("sky");
   names.push_back("aa");
   return names;
@@ -25,7 +27,7 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
       shader_dir_(shader_dir),
       sky_(shader_dir),
       post_filter_(shader_dir),
-      recorder_(pass_names_of(method)) {
+      recorder_(pass_names_of(method, scene)) {
   method_->set_pass_recorder(&recorder_);
   take_shading_settings();
 }
@@ -33,10 +35,27 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
 void FrameRenderer::take_shading_settings() {
   deferred_ = scene_.deferred_shading();
   const auto stages = deferred_ ? scene_.deferred_shade_stages() : std::vector<std::string>{};
-  if (stages == deferred_shade_stages_) return;  // e.g. a method switch: the same program
-  deferred_shade_stages_ = stages;
-  deferred_shade_program_ =
-      deferred_ ? gl::ShaderProgram(shader_dir_, "fullscreen.vert", stages) : gl::ShaderProgram();
+  if (stages != deferred_shade_stages_) {  // e.g. a method switch: the same program
+    deferred_shade_stages_ = stages;
+    deferred_shade_program_ =
+        deferred_ ? gl::ShaderProgram(shader_dir_, "fullscreen.vert", stages) : gl::ShaderProgram();
+  }
+  // Water over deferred shading, in a pass of its own (forward shading
+  // shades it in the terrain passes).
+  std::vector<std::string> water = deferred_ ? scene_.water_mask_stages() : std::vector<std::string>{};
+  if (!water.empty()) {
+    const auto shade = scene_.water_shade_stages();
+    water.insert(water.end(), shade.begin(), shade.end());
+  }
+  if (water == water_stages_) return;
+  water_stages_ = water;
+  water_.reset();
+  water_mask_program_ = gl::ShaderProgram();
+  water_shade_program_ = gl::ShaderProgram();
+  if (water.empty()) return;
+  water_ = std::make_unique<gl::WaterPass>();
+  water_mask_program_ = gl::ShaderProgram(shader_dir_, "fullscreen.vert", scene_.water_mask_stages());
+  water_shade_program_ = gl::ShaderProgram(shader_dir_, "fullscreen.vert", scene_.water_shade_stages());
 }
 
 FrameRenderer::~FrameRenderer() { method_->set_pass_recorder(nullptr); }
@@ -44,7 +63,8 @@ FrameRenderer::~FrameRenderer() { method_->set_pass_recorder(nullptr); }
 void FrameRenderer::set_method(TerrainMethod& method) {
   method_->set_pass_recorder(nullptr);
   method_ = &method;
-  if (auto names = pass_names_of(method); names != recorder_.pass_names()) recorder_.reset_passes(std::move(names));
+  if (auto names = pass_names_of(method, scene_); names != recorder_.pass_names())
+    recorder_.reset_passes(std::move(names));
   method_->set_pass_recorder(&recorder_);
   take_shading_settings();
 }
@@ -70,6 +90,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
 
   auto t0 = Clock::now();
   if (deferred_) target.use_surface_targets();
+  if (water_) target.use_water_marks();
   target.bind();
   // An eye under the surface sees the terrain's undersides: culled only while it is above.
   gl::begin_frame(back_face_culling_ && terrain::back_faces_hidden(scene_.heightfield(), camera.position));
@@ -81,7 +102,11 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   const bool drew_terrain = !r.method.passes.empty();  // a sky-only view runs no terrain pass
   if (deferred_ && drew_terrain) {
     scene_.bind_common(deferred_shade_program_, camera, method_->window_set());
-    deferred_shade_.run(target, deferred_shade_program_, recorder_);
+    deferred_shade_.run(target, deferred_shade_program_, recorder_, bool(water_));
+    if (water_) {
+      scene_.bind_common(water_shade_program_, camera, method_->window_set());
+      water_->run(target, water_mask_program_, water_shade_program_, recorder_);
+    }
   }
   gl::finish();
   r.timings.terrain_ms = ms_since(t0);
@@ -111,7 +136,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.total.draw_calls = gl::work_tally().draw_calls - at_start.draw_calls;
   r.total.bytes_uploaded = gl::work_tally().bytes_uploaded - at_start.bytes_uploaded;
   if (!r.method.passes.empty()) r.method.passes += "+";
-  if (deferred_ && drew_terrain) r.method.passes += "shade+";
+  if (deferred_ && drew_terrain) r.method.passes += water_ ? "shade+water+" : "shade+";
   r.method.passes += "sky";
   if (target.post_pass()) r.method.passes += "+aa";
   return r;

@@ -5,16 +5,19 @@
 // draw() runs the method's terrain passes, the sky into whatever the terrain
 // left uncovered, and the anti-aliasing resolve (multisampled) or post pass
 // (post-filtered). With deferred shading the terrain passes store each
-// pixel's surface and one pass shades them after the method's passes (part
-// of the terrain stage). The renderer itself never changes the scene. Each stage is timed on the wall clock and closed with gl::finish (GL timer queries are not real GPU
+// pixel's surface and one pass shades them after the method's passes, and in
+// a scene with water one more blends the water over them (both part of the
+// terrain stage). The renderer itself never changes the scene. Each stage is timed on the wall clock and closed with gl::finish (GL timer queries are not real GPU
 // times on llvmpipe), so per-stage figures are honest if slightly pessimistic.
 
 #include <chrono>
+#include <memory>
 
 #include "gl/deferred_shade_pass.h"
 #include "gl/post_filter_pass.h"
 #include "gl/render_target.h"
 #include "gl/sky_pass.h"
+#include "gl/water_pass.h"
 #include "gl/work_counters.h"
 #include "render/camera.h"
 #include "render/terrain_method.h"
@@ -86,6 +89,10 @@ class FrameRenderer {
   gl::DeferredShadePass deferred_shade_;
   gl::ShaderProgram deferred_shade_program_;
   std::vector<std::string> deferred_shade_stages_;  // what the program was linked from
+  // Deferred shading's water pass: only for a scene with water.
+  std::unique_ptr<gl::WaterPass> water_;
+  gl::ShaderProgram water_mask_program_, water_shade_program_;
+  std::vector<std::string> water_stages_;  // what the two programs were linked from
   void take_shading_settings();
   gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;

@@ -9,11 +9,17 @@
 #include "gl/coverage_codes.h"
 #include "gl/gl_context.h"
 #include "gl/frame_state.h"
+#include "gl/sky_pass.h"
 #include "gl/terrain_textures.h"
+#include "gl/water_textures.h"
 #include "terrain/detail_noise.h"
 #include "terrain/heightfield_overview.h"
 #include "terrain/imagery_loader.h"
 #include "terrain/paged_heights.h"
+#include "water/shore_field.h"
+#include "water/water_map.h"
+#include "water/water_presence.h"
+#include "water/wave_slopes.h"
 
 namespace ig::render {
 namespace {
@@ -24,6 +30,15 @@ constexpr float kDetailTileM[3] = {32.0f, 87.3f, 2048.0f};
 gl::Texture upload_detail_texture() {
   const terrain::DetailNoise noise = terrain::make_detail_noise();
   return gl::upload_colour_texture(noise.size, noise.size, noise.rgba.data(), /*rgba=*/true, /*repeat=*/true);
+}
+
+// The share of water around each sample of the height texture's grid (every
+// `step`-th DEM sample), row by row.
+gl::Texture upload_water_share(const water::WaterMap& map, int step) {
+  const water::ShoreGrid g = water::shore_grid(map, step);
+  return gl::upload_water_share_texture(g.width, g.height, [&](const auto& sink) {
+    water::for_each_shore_row(map, step, [&](int j, const std::uint8_t* share, const std::uint8_t*) { sink(j, share); });
+  });
 }
 }  // namespace
 
@@ -61,6 +76,17 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   if (!overview_ && (long long)tex.width * tex.height <= kMaxHeightDifferencesSamples)
     height_differences_tex_ = gl::upload_height_differences_texture(tex.width, tex.height, tex.heights.data());
   if (shading_.ground_detail) detail_tex_ = upload_detail_texture();
+  if (hf.water && !hf.water->empty()) {
+    const water::ShoreGrid grid = water::shore_grid(*hf.water, overview_step_);
+    water_share_tex_ = upload_water_share(*hf.water, overview_step_);
+    water_share_size_ = glm::ivec2(grid.width, grid.height);
+    const water::WaveSlopes waves = water::make_wave_slopes();
+    waves_tex_ = gl::upload_wave_texture(waves.size, waves.rgba.data());
+    const std::vector<water::PresenceLevel> presence = water::water_presence(*hf.water, overview_step_);
+    std::vector<gl::PresenceTexels> levels;
+    for (const auto& l : presence) levels.push_back({l.width, l.height, l.texels.data()});
+    water_presence_tex_ = gl::upload_water_presence_texture(levels);
+  }
   gl::finish();  // so upload_ms is the real transfer, not just the enqueue
   upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   pyramid_ = std::make_unique<terrain::HeightPyramid>(hf);
@@ -93,27 +119,55 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   }
 }
 
-std::vector<std::string> TerrainScene::shading_library() const {
+const char* TerrainScene::height_at_stage() const {
   const bool whole_heights = !overview_ && !windows_[0].height;
   linked_without_window_ = linked_without_window_ || whole_heights;
-  return {"terrain_shading.frag",
+  return whole_heights ? "height_at_whole.frag" : "height_at_window.frag";
+}
+
+std::vector<std::string> TerrainScene::shading_library(bool with_water) const {
+  std::vector<std::string> stages = {"terrain_shading.frag",
+          "fog.frag",
           shading_.ground_detail ? "ground_detail.frag" : "ground_plain.frag",
           height_differences_texture() ? "height_differences_texture.frag" : "height_differences_heights.frag",
-          whole_heights ? "height_at_whole.frag" : "height_at_window.frag",
+          height_at_stage(),
           has_imagery() ? "imagery.frag" : "imagery_none.frag"};
+  if (with_water) {
+    stages.insert(stages.end(), {"water_in_shading.frag", "water.frag", "sky_colour.frag"});
+  } else {
+    stages.push_back("water_none.frag");
+  }
+  return stages;
 }
 
 std::vector<std::string> TerrainScene::shading_stages(const std::vector<std::string>& own) const {
-  std::vector<std::string> stages = shading_library();
+  // Deferred shading draws the water in a pass of its own.
+  std::vector<std::string> stages = shading_library(has_water() && !shading_.deferred_shading);
   stages.push_back(shading_.deferred_shading ? "shade_deferred.frag" : "shade_forward.frag");
   stages.insert(stages.end(), own.begin(), own.end());
   return stages;
 }
 
 std::vector<std::string> TerrainScene::deferred_shade_stages() const {
-  std::vector<std::string> stages = shading_library();
+  std::vector<std::string> stages = shading_library(false);
   stages.push_back("deferred_shade.frag");
+  // With water it also marks where water may be, for the water pass.
+  if (has_water()) {
+    stages.insert(stages.end(), {"water_mark.frag", "water.frag", "sky_colour.frag"});
+  } else {
+    stages.push_back("water_mark_none.frag");
+  }
   return stages;
+}
+
+std::vector<std::string> TerrainScene::water_mask_stages() const {
+  if (!has_water()) return {};
+  return {"water_mask.frag"};
+}
+
+std::vector<std::string> TerrainScene::water_shade_stages() const {
+  if (!has_water()) return {};
+  return {"water_shade.frag", "water.frag", "sky_colour.frag", "fog.frag", height_at_stage()};
 }
 
 void TerrainScene::set_ground_detail(bool on) {
@@ -190,6 +244,7 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
       p.set(kPhaseNames[k], glm::vec2(terrain::detail_tile_phase(anchor, spacing, kDetailTileM[k])));
     }
   }
+  if (has_water() && (p.location("u_water_share") >= 0 || p.location("u_water_presence") >= 0)) bind_water(p, camera);
   p.set("u_fog_color", sky_light_.sky_horizon);
   // Fog reaches 98 % at the visibility distance: exp(-(k V)^2) = 0.02.
   const double k = shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;
@@ -197,6 +252,34 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   p.set("u_view_proj", camera.view_projection());
   p.set("u_earth_radius_m", float(camera.earth_radius_m));
   p.set("u_alpha", gl::coverage::kLevel1);
+}
+
+void TerrainScene::bind_water(const gl::ShaderProgram& p, const Camera& camera) const {
+  using gl::TextureUnit;
+  gl::bind_texture(TextureUnit::kWaterShare, water_share_tex_);
+  p.set("u_water_share", gl::unit(TextureUnit::kWaterShare));
+  p.set("u_water_share_size", glm::vec2(water_share_size_));
+  p.set("u_water_step", float(overview_step_));
+  gl::bind_texture(TextureUnit::kWaves, waves_tex_);
+  p.set("u_waves", gl::unit(TextureUnit::kWaves));
+  gl::bind_texture(TextureUnit::kWaterPresence, water_presence_tex_);
+  p.set("u_water_presence", gl::unit(TextureUnit::kWaterPresence));
+  // The eye and the waves' phases about a whole sample near it, in double:
+  // exact however far the terrain reaches.
+  const glm::dvec2 spacing(heightfield_.spacing_x_m, heightfield_.spacing_y_m);
+  const glm::dvec2 anchor = glm::floor(glm::dvec2(camera.position) / spacing);
+  p.set("u_water_anchor", glm::vec2(anchor));
+  p.set("u_water_eye", glm::vec3(glm::dvec3(glm::dvec2(camera.position) - anchor * spacing, camera.position.z)));
+  static const char* const kTileNames[water::kWaveLayers] = {"u_wave_tile_m[0]", "u_wave_tile_m[1]"};
+  static const char* const kPhaseNames[water::kWaveLayers] = {"u_wave_phase[0]", "u_wave_phase[1]"};
+  for (int k = 0; k < water::kWaveLayers; ++k) {
+    p.set(kTileNames[k], float(water::wave_layer(k).tile_m));
+    p.set(kPhaseNames[k], glm::vec2(water::wave_phase(anchor, spacing, k, time_s_)));
+  }
+  p.set("u_wave_unresolved", float(water::kUnresolvedSlopeVariance));
+  p.set("u_wave_variance", float(water::kSeaSlopeVariance));
+  p.set("u_sun_light", sky_light_.sun_light);
+  gl::set_sky_colours(p, sky_light_);
 }
 
 void TerrainScene::set_sun_direction(const glm::vec3& towards_sun) {

@@ -82,14 +82,23 @@ class TerrainScene {
   // (terrain_shading.frag), the surface colour with or without ground detail
   // (ground_detail.frag / ground_plain.frag), the heights through a window
   // or from the whole DEM (height_at_window.frag / height_at_whole.frag),
-  // imagery or none (imagery.frag / imagery_none.frag), then `own` (the
+  // imagery or none (imagery.frag / imagery_none.frag), the fog (fog.frag),
+  // water or none (water_in_shading.frag with water.frag and
+  // sky_colour.frag where the terrain pass shades it, water_none.frag without
+  // water or with deferred shading, whose water pass draws it), then `own` (the
   // method's main and helpers). A CPU rasterizer runs both sides of a
   // branch, also on a uniform, so what is off or absent is not linked at all.
   // With deferred shading the stages store what the colour is a function of
   // (shade_deferred.frag) instead of computing it (shade_forward.frag).
   std::vector<std::string> shading_stages(const std::vector<std::string>& own) const;
-  // The fragment stages of the deferred shading pass (deferred_shade.frag).
+  // The fragment stages of the deferred shading pass (deferred_shade.frag;
+  // with water also marking where it may be, water_mark.frag).
   std::vector<std::string> deferred_shade_stages() const;
+  // The fragment stages of deferred shading's water pass (gl/water_pass.h):
+  // the marks into its depth mask (water_mask.frag) and its shading
+  // (water_shade.frag); empty without water.
+  std::vector<std::string> water_mask_stages() const;
+  std::vector<std::string> water_shade_stages() const;
   // Whether the shading programs made from now on take the normal from the
   // DEM's central differences in one read (one texture of them, made with
   // the scene when the DEM fits one texture and kMaxHeightDifferencesSamples)
@@ -120,6 +129,12 @@ class TerrainScene {
   // (terrain/heightfield_overview.h), e.g. to build Level0 on.
   const terrain::Heightfield& texture_heightfield() const { return overview_ ? *overview_ : heightfield_; }
   bool has_imagery() const { return bool(imagery_tex_); }
+  // The terrain has water (heightfield().water): its share and wave
+  // textures exist and the shading links water.frag.
+  bool has_water() const { return bool(water_share_tex_); }
+  // The scene's clock (sim time, seconds): the waves drift with it. Used
+  // from the next bind_common.
+  void set_time(double sim_time_s) { time_s_ = sim_time_s; }
   // Imagery finer than the texture limit: the imagery texture is its
   // overview and this window holds full resolution around the point
   // follow_window() is given; null otherwise. Only methods that
@@ -207,8 +222,13 @@ class TerrainScene {
   void bind_common(const gl::ShaderProgram& program, const Camera& camera, int windows = -1) const;
 
  private:
-  // The fragment stages every shading program starts with.
-  std::vector<std::string> shading_library() const;
+  // The fragment stages every shading program starts with, the water's
+  // shading among them or not.
+  std::vector<std::string> shading_library(bool with_water) const;
+  // The heights: height_at_whole.frag or height_at_window.frag.
+  const char* height_at_stage() const;
+  // bind_common's part for programs linked with water.frag.
+  void bind_water(const gl::ShaderProgram& program, const Camera& camera) const;
 
   const terrain::Heightfield& heightfield_;
   ShadingParams shading_;
@@ -221,6 +241,11 @@ class TerrainScene {
   gl::Texture imagery_tex_;  // empty without imagery
   gl::Texture detail_tex_;   // ground detail (terrain/detail_noise.h); empty when shading_.ground_detail is off
   gl::Texture height_differences_tex_;  // see height_differences_texture(); empty with an overview
+  gl::Texture water_share_tex_;  // the share of water around each sample; empty without water
+  gl::Texture waves_tex_;        // the waves' slopes; empty without water
+  gl::Texture water_presence_tex_;  // where water may be (deferred shading's water pass); empty without water
+  glm::ivec2 water_share_size_{0};
+  double time_s_ = 0.0;
   bool use_height_differences_ = true;
   // A shading program was linked reading the whole DEM alone (no window).
   mutable bool linked_without_window_ = false;
