@@ -203,6 +203,7 @@ NativeAnswer HostServices::answer(const NativeQuery& q) {
     out.hat_m = a->z - s->height_m;
     out.point = *p;
     out.normal = s->normal;
+    out.material = std::uint32_t(s->material);
     return out;
   }
   std::optional<terrain::LosHit> hit;
@@ -224,12 +225,14 @@ NativeAnswer HostServices::answer(const NativeQuery& q) {
   out.hot_or_range_m = hit->range_m;
   out.point = *p;
   out.normal = hit->normal;
+  out.material = std::uint32_t(hit->material);
   return out;
 }
 
 std::optional<terrain::SurfacePoint> HostServices::surface_for_hot(double x_m, double y_m) const {
   auto s = query_.surface_at(x_m, y_m);
-  if (!s || !drawn_height_) return s;
+  // Water is answered at its level however the ground under it is drawn.
+  if (!s || !drawn_height_ || s->material == terrain::SurfaceMaterial::Water) return s;
   const auto h = drawn_height_(x_m, y_m);
   if (!h) return s;  // full resolution drawn there
   // The drawn (Level0) triangle's slope from its heights half a metre around.
@@ -262,8 +265,11 @@ HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& own
   out.valid = true;
   out.hot_m = s->height_m;
   out.hat_m = p->z - s->height_m;
-  // Only the extended response carries the normal (two inverse trig calls).
-  if (out.extended) azimuth_elevation(s->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
+  // Only the extended response carries the material and the normal (two
+  // inverse trig calls).
+  if (!out.extended) return out;
+  out.material = std::uint32_t(s->material);
+  azimuth_elevation(s->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
   return out;
 }
 
@@ -273,6 +279,7 @@ void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHi
   out.range_valid = hit.has_value();
   if (!hit) return;
   out.range_m = hit->range_m;
+  out.material = std::uint32_t(hit->material);  // collision notifications carry it too
   if (!out.extended) return;  // the basic response carries the range only
   azimuth_elevation(hit->normal, out.normal_azimuth_deg, out.normal_elevation_deg);
   if (coords == CigiCoords::Entity) {

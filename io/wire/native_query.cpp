@@ -133,8 +133,8 @@ std::array<std::uint8_t, kNativeQuerySize> encode_native_query(const NativeQuery
 
 // [0] "IGQA", [4] u16 version, [6] u8 kind, [7] u8 flags (bit 0 geodetic,
 // 1 valid, 2 hit), [8] u32 id, [12] u32 IG frame, [16] f64 HOT / range,
-// [24] f64 HAT, [32] point (3 x f64), [56] normal (3 x f64), [80] reserved,
-// [92] CRC-32 of [0, 92).
+// [24] f64 HAT, [32] point (3 x f64), [56] normal (3 x f64), [80] u32
+// material code, [84] reserved, [92] CRC-32 of [0, 92).
 std::array<std::uint8_t, kNativeQuerySize> encode_native_answer(const NativeAnswer& a) {
   const auto flags =
       std::uint8_t((a.geodetic ? kFlagGeodetic : 0) | (a.valid ? kFlagValid : 0) | (a.hit ? kFlagHit : 0));
@@ -144,6 +144,7 @@ std::array<std::uint8_t, kNativeQuerySize> encode_native_answer(const NativeAnsw
   bytes::store_f64(b.data() + 24, a.hat_m, kLe);
   store3(b.data() + 32, a.point);
   store3(b.data() + 56, a.normal);
+  bytes::store_u32(b.data() + 80, a.material, kLe);
   seal(b.data());
   return b;
 }
@@ -164,6 +165,7 @@ std::optional<NativeAnswer> decode_native_answer(std::span<const std::uint8_t> d
   a.hat_m = bytes::load_f64(p + 24, kLe);
   a.point = load3(p + 32);
   a.normal = load3(p + 56);
+  a.material = bytes::load_u32(p + 80, kLe);
   return a;
 }
 

@@ -41,6 +41,7 @@ struct NativeAnswer {
   double hat_m = 0.0;           // height only: the point's altitude minus HOT
   glm::dvec3 point{0.0};        // the surface point under / hit
   glm::dvec3 normal{0.0};       // unit, ENU
+  std::uint32_t material = 0;   // what the surface is: 0 land, 1 water (terrain/surface_material.h)
 };
 
 // Why a query datagram was dropped.

@@ -24,19 +24,22 @@
 
 #include "terrain/height_pyramid.h"
 #include "terrain/heightfield.h"
+#include "terrain/surface_material.h"
 
 namespace ig::terrain {
 
 struct SurfacePoint {
-  double height_m;    // the drawn surface's height at (x, y)
-  glm::dvec3 normal;  // unit, z > 0, of the triangle under (x, y)
+  double height_m;    // the drawn surface's height at (x, y); over water the water's level
+  glm::dvec3 normal;  // unit, z > 0, of the triangle under (x, y); over water straight up
   int cell_i, cell_j;
+  SurfaceMaterial material = SurfaceMaterial::Land;
 };
 
 struct LosHit {
   double range_m;     // from the source, along the line (metres)
-  glm::dvec3 point;   // terrain-local (flat DEM frame: z is the DEM height there)
-  glm::dvec3 normal;  // unit normal of the triangle hit (flat DEM frame)
+  glm::dvec3 point;   // terrain-local (flat DEM frame: z is the DEM height there, or the water's level)
+  glm::dvec3 normal;  // unit normal of the triangle hit (flat DEM frame); straight up on water
+  SurfaceMaterial material = SurfaceMaterial::Land;
 };
 
 class TerrainQuery {
@@ -76,6 +79,12 @@ class TerrainQuery {
   bool inside(double x_m, double y_m) const;
 
  private:
+  // The nearest crossing of the line from `from` along unit `d` (ranges
+  // [min, max]) with a water body's surface that is water there; nullopt
+  // when it meets none.
+  std::optional<LosHit> water_hit(const glm::dvec3& from, const glm::dvec3& d, double min_range_m,
+                                  double max_range_m) const;
+
   const Heightfield& hf_;
   std::unique_ptr<HeightPyramid> owned_pyramid_;
   const HeightPyramid& pyramid_;
