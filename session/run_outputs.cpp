@@ -1,5 +1,7 @@
 #include "session/run_outputs.h"
 
+#include "water/water_map.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -9,6 +11,7 @@
 #include "session/process_memory.h"
 #include "stats/timing.h"
 #include "terrain/paged_heights.h"
+#include "water/water_map.h"
 
 namespace ig::session {
 namespace {
@@ -144,6 +147,15 @@ int RunOutputs::finish(ScenarioRunner& runner, const std::string& scenario_file,
       {"visibility_m", runner.scene().shading().fog_visibility_m},  // 0: no fog
       {"process_memory", process_memory()},
   };
+  // The water terrain.water found or read (none: null).
+  summary["water"] = nullptr;
+  if (hf.water) {
+    double area = 0.0;
+    for (const auto& b : hf.water->bodies()) area += b.area_m2;
+    summary["water"] = {{"source", hf.water->source()},
+                        {"bodies", hf.water->bodies().size()},
+                        {"area_km2", area / 1e6}};
+  }
   if (hf.paged) {  // paged heights
     const auto st = hf.paged->cache->stats();
     double wall_s = 0.0;

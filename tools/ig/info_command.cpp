@@ -16,6 +16,8 @@
 #include "cli_args.h"
 #include "ig/commands.h"
 #include "terrain/dem_loader.h"
+#include "water/water_file.h"
+#include "water/water_setup.h"
 
 namespace ig::app {
 
@@ -24,12 +26,15 @@ namespace {
 constexpr const char* kUsage =
     "usage: ig info FILE|FOLDER [--encoding auto|terrain-rgb|png16|gdal] [--scale S] [--offset O]\n"
     "                    [--spacing M] [--fill-max-distance N] [--fill-smoothing N]\n"
+    "                    [--water auto|off|FILE] [--water-level-attribute NAME]\n"
     "Loads a DEM (GeoTIFF, SRTM .hgt, USGS DEM, ESRI ASCII grid, any single-band GDAL\n"
     "raster or VRT, 16-bit PNG or terrain-RGB PNG; a FOLDER is a mosaic of the DEM tiles\n"
     "in it) and prints one JSON object: size, spacing in metres, min/max/mean height,\n"
     "filled nodata samples (nodata_count) and how they were filled (void_fill: GDAL's\n"
     "GDALFillNodata, its settings, deep_count = voids beyond its search distance),\n"
-    "CRS, corner coordinates, and for a folder the tile counts.\n"
+    "CRS, corner coordinates, for a folder the tile counts, and the water terrain.water\n"
+    "finds or reads (auto by default: the sea and lakes an SRTM edit left; off; or a\n"
+    "GDAL raster or OGR polygon FILE): source, bodies, area, each body's level.\n"
     "Exit status: 0 ok, 1 the file could not be loaded, 2 bad arguments.\n";
 
 double parse_number(const std::string& option, const std::string& text) {
@@ -72,10 +77,12 @@ class SilenceStderr {
 
 // The DEM file and its load options from the command line; UsageError (one
 // line, no usage text) on a mistake.
-std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOptions& opts) {
+std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOptions& opts,
+                       options::WaterOptions& water) {
   CLI::App app("ig info");
   std::vector<std::string> files;
-  std::optional<std::string> encoding, scale, offset, spacing, fill_distance, fill_smoothing;
+  std::optional<std::string> encoding, scale, offset, spacing, fill_distance, fill_smoothing, water_source,
+      level_attribute;
   app.add_option("file", files, "the DEM file, or a folder of DEM tiles read as one mosaic")->option_text("FILE|FOLDER");
   app.add_option("--encoding", encoding,
                  "how to decode: auto (default; PNGs by their layout, else GDAL), png16 (metres = value * scale "
@@ -91,6 +98,14 @@ std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOpt
   app.add_option("--fill-smoothing", fill_smoothing,
                  "smoothing passes over filled samples, 0..32 (gdal_fillnodata.py -si; default 2)")
       ->option_text("N");
+  app.add_option("--water", water_source,
+                 "where the water is: auto (default: the sea and lakes an SRTM edit left in the DEM), off, or a "
+                 "water FILE (any GDAL raster, non-zero = water, or OGR layer of polygons)")
+      ->option_text("auto|off|FILE");
+  app.add_option("--water-level-attribute", level_attribute,
+                 "with a polygon FILE: the numeric attribute holding each polygon's level in metres (default: "
+                 "from the DEM)")
+      ->option_text("NAME");
   try {
     parse_command_line(app, args);
   } catch (const UsageError& e) {
@@ -123,6 +138,21 @@ std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOpt
   if (fill_smoothing)
     opts.void_fill.smoothing_iterations =
         whole_number("--fill-smoothing", *fill_smoothing, 0, VoidFill::kMaxVoidSmoothing);
+  if (water_source) {
+    if (*water_source == "auto" || *water_source == "off") {
+      water.source = *water_source == "auto" ? options::WaterSource::Auto : options::WaterSource::Off;
+    } else if (water_source->empty()) {
+      throw UsageError("--water needs auto, off or a file's path");
+    } else {
+      water.source = options::WaterSource::File;
+      water.file = *water_source;
+    }
+  }
+  if (level_attribute) {
+    if (water.source != options::WaterSource::File)
+      throw UsageError("--water-level-attribute needs --water FILE (a polygon layer)");
+    water.level_attribute = *level_attribute;
+  }
   if (files.size() > 1) throw UsageError("more than one FILE given ('" + files[0] + "', '" + files[1] + "')");
   if (files.empty()) throw UsageError("missing FILE (usage: ig info FILE [options]; see --help)");
   return files[0];
@@ -132,9 +162,10 @@ std::string parse_args(const std::vector<std::string>& args, terrain::DemLoadOpt
 
 int run_info_command(const std::vector<std::string>& args) {
   terrain::DemLoadOptions opts;
+  options::WaterOptions water;
   std::string file;
   try {
-    file = parse_args(args, opts);
+    file = parse_args(args, opts, water);
   } catch (const HelpRequested& h) {
     std::cout << kUsage << "\n" << h.options;
     return 0;
@@ -145,11 +176,13 @@ int run_info_command(const std::vector<std::string>& args) {
 
   try {
     terrain::Heightfield hf;
+    std::shared_ptr<const water::WaterMap> found;
     {
       SilenceStderr quiet;
       hf = terrain::load_dem(file, opts);
+      found = water::place_water(hf, water);
     }
-    std::cout << terrain::dem_info_json(hf) << "\n";
+    std::cout << terrain::dem_info_json(hf, found.get(), water.source == options::WaterSource::Off) << "\n";
     std::cout.flush();
     return std::cout ? 0 : 1;
   } catch (const std::exception& e) {  // DemError, and e.g. std::bad_alloc

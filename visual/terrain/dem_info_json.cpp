@@ -3,10 +3,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <numeric>
+#include <vector>
+
+#include "water/water_map.h"
 
 namespace ig::terrain {
 
@@ -24,9 +29,46 @@ nlohmann::ordered_json json_number(T v) {
   return std::strtod(std::string(buf, res.ptr).c_str(), nullptr);
 }
 
+// The water terrain.water found or read (dem_info_json's "water").
+nlohmann::ordered_json water_json(const Heightfield& hf, const water::WaterMap& map) {
+  nlohmann::ordered_json w;
+  w["source"] = map.source();
+  w["bodies"] = map.bodies().size();
+  std::int64_t samples = 0;
+  double area = 0.0;
+  for (const auto& b : map.bodies()) {
+    samples += b.samples;
+    area += b.area_m2;
+  }
+  w["samples"] = samples;
+  w["area_km2"] = json_number(std::round(area / 1e3) / 1e3);
+  std::vector<std::size_t> order(map.bodies().size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return map.bodies()[a].samples > map.bodies()[b].samples; });
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (std::size_t k : order) {
+    const water::WaterBody& b = map.bodies()[k];
+    nlohmann::ordered_json o;
+    o["kind"] = water::water_kind_name(b.kind);
+    o["level_m"] = json_number(b.level_m);
+    o["samples"] = b.samples;
+    o["area_km2"] = json_number(std::round(b.area_m2 / 1e3) / 1e3);
+    o["samples_box"] = {b.min_i, b.min_j, b.max_i, b.max_j};
+    if (hf.georef) {
+      const auto& g = hf.georef->grid_to_crs;
+      const double i = 0.5 * (b.min_i + b.max_i), j = 0.5 * (b.min_j + b.max_j);
+      o["centre"] = {json_number(g[0] + i * g[1] + j * g[2]), json_number(g[3] + i * g[4] + j * g[5])};
+    }
+    list.push_back(std::move(o));
+  }
+  w["list"] = std::move(list);
+  return w;
+}
+
 }  // namespace
 
-std::string dem_info_json(const Heightfield& hf) {
+std::string dem_info_json(const Heightfield& hf, const water::WaterMap* water, bool water_off) {
   nlohmann::ordered_json o;
   o["width"] = hf.width;
   o["height"] = hf.height;
@@ -63,6 +105,11 @@ std::string dem_info_json(const Heightfield& hf) {
     const auto [west, south, east, north] = *hf.crs_bounds();
     o["bounds"] = {{"west", json_number(west)}, {"south", json_number(south)}, {"east", json_number(east)},
                    {"north", json_number(north)}};
+  }
+  if (water) {
+    o["water"] = water_json(hf, *water);
+  } else if (water_off) {
+    o["water"] = nullptr;
   }
   // One line; invalid UTF-8 in a path or CRS name replaced, not thrown.
   return o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);

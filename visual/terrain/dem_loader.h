@@ -58,8 +58,12 @@ Heightfield load_dem(const std::string& path, const DemLoadOptions& opts = {});
 // (short name or null), geographic, source, and for georeferenced grids
 // "corners" ({"sw","se","nw","ne"}: [x, y] CRS coordinates of the corner
 // sample centres) and "bounds" (outer pixel edges: west, south, east, north);
-// for a folder of tiles also "tiles" and "reprojected_tiles".
-std::string dem_info_json(const Heightfield& hf);
+// for a folder of tiles also "tiles" and "reprojected_tiles"; with `water`
+// (what terrain.water found or read, water/water_setup.h) "water": its
+// source, number of bodies, water samples and area, and each body (kind,
+// level_m, samples, area_km2, its bounding box in samples and, georeferenced,
+// its centre in the DEM's CRS), the largest first; null when water is off.
+std::string dem_info_json(const Heightfield& hf, const water::WaterMap* water = nullptr, bool water_off = false);
 
 // Metres per unit of latitude / longitude at geodetic latitude lat_deg on an
 // ellipsoid (semi-major axis a, inverse flattening inv_f; inv_f = 0 is a

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "terrain/test/temp_dir_fixture.h"
+#include "terrain/dem_loader.h"
+#include "terrain/georef.h"
 #include "water/test/water_test_terrain.h"
 #include "water/water_levels.h"
 #include "water/water_setup.h"
@@ -296,6 +298,57 @@ TEST_F(WaterFile, PlaceWaterFollowsTheSetting) {
   ASSERT_TRUE(none);
   EXPECT_TRUE(none->empty());
   EXPECT_FALSE(dry.water);
+}
+
+}  // namespace
+}  // namespace ig::water
+
+namespace ig::water {
+namespace {
+
+// The Must-show case on the real Sierra: terrain.water a GeoJSON polygon
+// of Lake Tahoe alone. Water inside it at Tahoe's level, no lake found
+// anywhere else (Mono Lake, Walker Lake stay land), the same cells as
+// gdal_rasterize burns.
+class WaterFileSierra : public WaterFile {};
+
+TEST_F(WaterFileSierra, OneLakePolygonIsTheOnlyWater) {
+  const char* dem_dir = std::getenv("IG_DEM_DIR");
+  if (!dem_dir || !*dem_dir) GTEST_SKIP() << "IG_DEM_DIR not set: real-DEM tests skipped";
+  terrain::Heightfield hf = terrain::load_dem(std::string(dem_dir) + "/sierra_nevada_3arcsec_4097.tif");
+  // Inside Tahoe's shore (lon, lat), drawn by hand from the DEM's flat 1 899
+  // m; off the sample lattice (a vertex at a round 0.01 degree puts an edge
+  // exactly through a column of sample centres, where burning is a tie).
+  const std::string path = write(
+      "tahoe.geojson",
+      R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{"name":"Lake Tahoe"},)"
+      R"("geometry":{"type":"Polygon","coordinates":[[[-120.1013,39.2207],[-120.0011,39.2403],[-119.9409,39.2012],)"
+      R"([-119.9404,39.0506],[-119.9802,38.9611],[-120.0407,38.9609],[-120.1206,39.0503],[-120.1304,39.1502],)"
+      R"([-120.1013,39.2207]]]}}]})");
+  options::WaterOptions opts;
+  opts.source = options::WaterSource::File;
+  opts.file = path;
+  const auto map = place_water(hf, opts);
+  ASSERT_TRUE(map);
+  ASSERT_EQ(map->bodies().size(), 1u);
+  EXPECT_EQ(map->bodies()[0].level_m, 1899.0f);  // the flat surface holds most of the polygon
+  auto sample = [&](double lat, double lon) {
+    const auto xy = terrain::geodetic_to_local(hf, lat, lon);
+    return std::pair{int(std::lround(xy->x / hf.spacing_x_m)), int(std::lround(xy->y / hf.spacing_y_m))};
+  };
+  const auto [ti, tj] = sample(39.09, -120.04);
+  EXPECT_TRUE(map->is_water(ti, tj));
+  EXPECT_EQ(hf.at(ti, tj), 1899.0f);
+  const auto [mi, mj] = sample(37.96, -119.05);  // Mono Lake: found by auto, not in the file
+  EXPECT_FALSE(map->is_water(mi, mj));
+  const auto [wi, wj] = sample(38.70, -118.72);  // Walker Lake
+  EXPECT_FALSE(map->is_water(wi, wj));
+  const std::vector<std::uint8_t> burned = gdal_rasterize(hf, path);
+  std::int64_t differ = 0;
+  for (int j = 0; j < hf.height; ++j)
+    for (int i = 0; i < hf.width; ++i) differ += map->is_water(i, j) != (burned[std::size_t(j) * hf.width + i] != 0);
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(map->water_samples(), 60000);
 }
 
 }  // namespace
