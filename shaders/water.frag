@@ -3,12 +3,12 @@
 // only then): how much of a pixel is water and its colour, used in the
 // terrain pass (water_in_shading.frag) or, with deferred shading, in a pass
 // of its own over the shaded frame (water_mark.frag, water_shade.frag).
-// The data made the surface under the
-// water level (the flattened bed is the water's surface), so the water is
-// drawn on the terrain's own surface, the same for every LOD method, and
-// the shore is where the share of water around each sample
-// (water/shore_field.h) is one half: smooth along any coast, anti-aliased
-// over the pixel's footprint, the share itself far away. The surface: waves
+// The data made the surface under the water level (the flattened bed is the
+// water's surface), so the water is drawn on the terrain's own surface, the
+// same for every LOD method, and the shore is where the share of water
+// around each sample (water/shore_field.h) is one half: smooth along any
+// coast, anti-aliased over the pixel's footprint, the share itself far
+// away. The surface: waves
 // as slopes fixed to the terrain (water/wave_slopes.h; two tile sizes
 // drifting with time, filtered with distance, their hidden slopes widening
 // the glint), the sky mirrored by Fresnel (Schlick, water's 0.02), the sun's
@@ -18,8 +18,8 @@ uniform sampler2D u_water_share;   // R8, mipmapped: the share of water (water/s
 uniform vec2 u_water_share_size;   // its texels
 uniform float u_water_step;        // DEM samples a texel (> 1 over an overview)
 uniform sampler2D u_waves;         // RGBA16F, tiling: slope x, slope y, their squares
-uniform sampler2D u_water_presence;  // R8 levels: where water may be (water/water_presence.h)
-const int kPresenceBlock = 4;      // share texels a presence texel spans at level 0
+uniform sampler2D u_water_presence;  // R8 levels: where water shows (water/water_presence.h)
+uniform float u_water_presence_block;  // share texels a presence texel spans at level 0
 uniform float u_wave_tile_m[2];
 uniform vec2 u_wave_phase[2];      // each layer's tile position at the anchor and time (CPU, double)
 uniform float u_wave_unresolved;   // slope variance per axis the texture does not hold
@@ -60,8 +60,8 @@ float water_coverage(vec2 s, vec2 s_dx, vec2 s_dy) {
 // pass's mask.
 bool water_near(vec2 s, vec2 s_dx, vec2 s_dy) {
   float texels = max(length(s_dx), length(s_dy)) / u_water_step;
-  float level = ceil(log2(max(texels / float(kPresenceBlock), 1.0)));
-  vec2 tc = (s / u_water_step + 0.5) / (float(kPresenceBlock) * vec2(textureSize(u_water_presence, 0)));
+  float level = ceil(log2(max(texels / u_water_presence_block, 1.0)));
+  vec2 tc = (s / u_water_step + 0.5) / (u_water_presence_block * vec2(textureSize(u_water_presence, 0)));
   return textureLod(u_water_presence, tc, level).r > 0.0;
 }
 

@@ -33,11 +33,14 @@ gl::Texture upload_detail_texture() {
 }
 
 // The share of water around each sample of the height texture's grid (every
-// `step`-th DEM sample), row by row.
-gl::Texture upload_water_share(const water::WaterMap& map, int step) {
+// `step`-th DEM sample), row by row, each row also given to `presence`.
+gl::Texture upload_water_share(const water::WaterMap& map, int step, water::PresenceBuilder& presence) {
   const water::ShoreGrid g = water::shore_grid(map, step);
   return gl::upload_water_share_texture(g.width, g.height, [&](const auto& sink) {
-    water::for_each_shore_row(map, step, [&](int j, const std::uint8_t* share, const std::uint8_t*) { sink(j, share); });
+    water::for_each_shore_row(map, step, [&](int j, const std::uint8_t* share, const std::uint8_t*) {
+      sink(j, share);
+      presence.add_row(j, share);
+    });
   });
 }
 }  // namespace
@@ -78,11 +81,12 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
   if (shading_.ground_detail) detail_tex_ = upload_detail_texture();
   if (hf.water && !hf.water->empty()) {
     const water::ShoreGrid grid = water::shore_grid(*hf.water, overview_step_);
-    water_share_tex_ = upload_water_share(*hf.water, overview_step_);
+    water::PresenceBuilder presence_builder(grid);
+    water_share_tex_ = upload_water_share(*hf.water, overview_step_, presence_builder);
     water_share_size_ = glm::ivec2(grid.width, grid.height);
     const water::WaveSlopes waves = water::make_wave_slopes();
     waves_tex_ = gl::upload_wave_texture(waves.size, waves.rgba.data());
-    const std::vector<water::PresenceLevel> presence = water::water_presence(*hf.water, overview_step_);
+    const std::vector<water::PresenceLevel> presence = presence_builder.levels();
     std::vector<gl::PresenceTexels> levels;
     for (const auto& l : presence) levels.push_back({l.width, l.height, l.texels.data()});
     water_presence_tex_ = gl::upload_water_presence_texture(levels);
@@ -264,6 +268,7 @@ void TerrainScene::bind_water(const gl::ShaderProgram& p, const Camera& camera) 
   p.set("u_waves", gl::unit(TextureUnit::kWaves));
   gl::bind_texture(TextureUnit::kWaterPresence, water_presence_tex_);
   p.set("u_water_presence", gl::unit(TextureUnit::kWaterPresence));
+  p.set("u_water_presence_block", float(water::kPresenceBlock));
   // The eye and the waves' phases about a whole sample near it, in double:
   // exact however far the terrain reaches.
   const glm::dvec2 spacing(heightfield_.spacing_x_m, heightfield_.spacing_y_m);

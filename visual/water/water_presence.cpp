@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "water/shore_field.h"
 
 namespace ig::water {
 namespace {
@@ -23,18 +22,21 @@ PresenceLevel quantised(int width, int height, const std::vector<double>& mean) 
 
 }  // namespace
 
-std::vector<PresenceLevel> water_presence(const WaterMap& map, int step) {
-  const ShoreGrid g = shore_grid(map, step);
-  // Sides of powers of two, so every level is exactly half the one before
-  // (as a texture's mip chain is).
-  int w = power_of_two_at_least((g.width + kPresenceBlock - 1) / kPresenceBlock);
-  int h = power_of_two_at_least((g.height + kPresenceBlock - 1) / kPresenceBlock);
-  std::vector<double> mean(std::size_t(w) * h, 0.0);
+PresenceBuilder::PresenceBuilder(const ShoreGrid& grid)
+    : grid_(grid),
+      width_(power_of_two_at_least((grid.width + kPresenceBlock - 1) / kPresenceBlock)),
+      height_(power_of_two_at_least((grid.height + kPresenceBlock - 1) / kPresenceBlock)),
+      mean_(std::size_t(width_) * std::size_t(height_), 0.0) {}
+
+void PresenceBuilder::add_row(int j, const std::uint8_t* share) {
   const double per_texel = 1.0 / (255.0 * kPresenceBlock * kPresenceBlock);
-  for_each_shore_row(map, step, [&](int j, const std::uint8_t* share, const std::uint8_t*) {
-    double* row = mean.data() + std::size_t(j / kPresenceBlock) * w;
-    for (int i = 0; i < g.width; ++i) row[i / kPresenceBlock] += share[i] * per_texel;
-  });
+  double* row = mean_.data() + std::size_t(j / kPresenceBlock) * width_;
+  for (int i = 0; i < grid_.width; ++i) row[i / kPresenceBlock] += share[i] * per_texel;
+}
+
+std::vector<PresenceLevel> PresenceBuilder::levels() const {
+  int w = width_, h = height_;
+  std::vector<double> mean = mean_;
   std::vector<PresenceLevel> levels{quantised(w, h, mean)};
   while (w > 1 || h > 1) {
     const int nw = std::max(w / 2, 1), nh = std::max(h / 2, 1);
@@ -48,6 +50,12 @@ std::vector<PresenceLevel> water_presence(const WaterMap& map, int step) {
     levels.push_back(quantised(w, h, mean));
   }
   return levels;
+}
+
+std::vector<PresenceLevel> water_presence(const WaterMap& map, int step) {
+  PresenceBuilder builder(shore_grid(map, step));
+  for_each_shore_row(map, step, [&](int j, const std::uint8_t* share, const std::uint8_t*) { builder.add_row(j, share); });
+  return builder.levels();
 }
 
 }  // namespace ig::water

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "water/shore_field.h"
 #include "water/water_map.h"
 
 namespace ig::water {
@@ -25,9 +26,22 @@ struct PresenceLevel {
   std::vector<std::uint8_t> texels;  // row-major, row 0 = south; mean share * 255
 };
 
-// The levels over the share grid of every step-th sample, down to 1 x 1;
-// level 0's sides are powers of two (past the grid: no water), so each
-// level is half the one before, as a texture's mips.
+// The levels from the share grid's rows (water/shore_field.h), given in
+// order; level 0's sides are powers of two (past the grid: no water), so
+// each level is half the one before, down to 1 x 1, as a texture's mips.
+class PresenceBuilder {
+ public:
+  explicit PresenceBuilder(const ShoreGrid& grid);
+  void add_row(int j, const std::uint8_t* share);
+  std::vector<PresenceLevel> levels() const;
+
+ private:
+  ShoreGrid grid_;
+  int width_ = 1, height_ = 1;
+  std::vector<double> mean_;  // level 0's mean shares
+};
+
+// The same over every step-th sample of a map's share grid.
 std::vector<PresenceLevel> water_presence(const WaterMap& map, int step);
 
 }  // namespace ig::water

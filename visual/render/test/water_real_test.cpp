@@ -6,52 +6,17 @@
 #include <cstdio>
 
 #include "picture_checks.h"
+#include "water_checks.h"
 
 namespace {
 
 using picture::Shot;
 using picture::ShotSpec;
+using water_checks::ShoreError;
+using water_checks::without_water;
 
 ig::io::Scenario scenario(const std::string& file) {
   return ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/" + file);
-}
-
-ig::io::Scenario without_water(ig::io::Scenario s) {
-  s.terrain.water.source = ig::options::WaterSource::Off;
-  return s;
-}
-
-// Pixels whose 4 x 4 block in the supersampled render holds both water
-// (where water on and off differ) and land, no sky: mean |difference| of
-// `shot` from the box-filtered supersampled render there.
-struct ShoreError {
-  double mean = 0.0;
-  long long pixels = 0;
-};
-ShoreError shore_error(const Shot& shot, const Shot& ss_with, const Shot& ss_without) {
-  const Shot ss = picture::box_filter(ss_with, 4);
-  ShoreError e;
-  double sum = 0.0;
-  for (int y = 1; y + 1 < shot.h; ++y)
-    for (int x = 1; x + 1 < shot.w; ++x) {
-      int water = 0, sky = 0;
-      for (int v = 0; v < 4; ++v)
-        for (int u = 0; u < 4; ++u) {
-          const std::size_t q = std::size_t(y * 4 + v) * ss_with.w + (x * 4 + u);
-          bool differs = false;
-          for (int k = 0; k < 3; ++k) differs = differs || ss_with.rgba[q * 4 + k] != ss_without.rgba[q * 4 + k];
-          water += differs;
-          sky += ss_with.depth[q] == 0.0f;
-        }
-      if (water == 0 || water == 16 || sky > 0) continue;
-      const std::size_t p = std::size_t(y) * shot.w + x;
-      double d = 0.0;
-      for (int k = 0; k < 3; ++k) d += std::abs(int(shot.rgba[p * 4 + k]) - int(ss.rgba[p * 4 + k]));
-      sum += d / 3.0;
-      ++e.pixels;
-    }
-  e.mean = e.pixels ? sum / double(e.pixels) : 0.0;
-  return e;
 }
 
 TEST(WaterReal, TahoeShoreIsCloseToSupersampled) {
@@ -61,7 +26,8 @@ TEST(WaterReal, TahoeShoreIsCloseToSupersampled) {
   const Shot ss_with = picture::render(s, 0, ShotSpec{4 * w, 4 * h, "off", true, "twolevel"});
   const Shot ss_without = picture::render(without_water(s), 0, ShotSpec{4 * w, 4 * h, "off", true, "twolevel"});
   for (const char* aa : {"fxaa", "off"}) {
-    const ShoreError e = shore_error(picture::render(s, 0, ShotSpec{w, h, aa, true, "twolevel"}), ss_with, ss_without);
+    const ShoreError e =
+        water_checks::shore_error(picture::render(s, 0, ShotSpec{w, h, aa, true, "twolevel"}), ss_with, ss_without);
     std::printf("[water shore, Tahoe 30 m] %s: %lld shore pixels, mean |difference| from 16x SS %.2f levels\n", aa,
                 e.pixels, e.mean);
     EXPECT_GT(e.pixels, 100);

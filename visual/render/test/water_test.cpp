@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "picture_checks.h"
+#include "water_checks.h"
 #include "terrain/test/temp_dir_fixture.h"
 #include "water_scene.h"
 
@@ -17,6 +18,9 @@ namespace {
 
 using picture::Shot;
 using picture::ShotSpec;
+using water_checks::differing;
+using water_checks::ShoreError;
+using water_checks::without_water;
 
 class Water : public ig::terrain::test::TempDirTest {
  protected:
@@ -28,59 +32,13 @@ class Water : public ig::terrain::test::TempDirTest {
   std::string dem_;
 };
 
-// Pixels that differ between two shots of one view (water on and off).
-std::vector<bool> differing(const Shot& a, const Shot& b) {
-  std::vector<bool> out(std::size_t(a.w) * a.h);
-  for (std::size_t p = 0; p < out.size(); ++p)
-    for (int k = 0; k < 3; ++k) out[p] = out[p] || a.rgba[p * 4 + k] != b.rgba[p * 4 + k];
-  return out;
-}
-
-ig::io::Scenario without_water(ig::io::Scenario s) {
-  s.terrain.water.source = ig::options::WaterSource::Off;
-  return s;
-}
-
-// The shore: pixels whose 4 x 4 block in the supersampled render holds both
-// water and land (and no sky). Mean |difference| of `shot` from the
-// box-filtered supersampled render there.
-struct ShoreError {
-  double mean = 0.0;
-  long long pixels = 0;
-};
-ShoreError shore_error(const ig::io::Scenario& s, const Shot& shot, const Shot& ss_with, const Shot& ss_without) {
-  const std::vector<bool> wet = differing(ss_with, ss_without);
-  const Shot ss = picture::box_filter(ss_with, 4);
-  ShoreError e;
-  double sum = 0.0;
-  for (int y = 1; y + 1 < shot.h; ++y)
-    for (int x = 1; x + 1 < shot.w; ++x) {
-      int water = 0, sky = 0;
-      for (int v = 0; v < 4; ++v)
-        for (int u = 0; u < 4; ++u) {
-          const std::size_t q = std::size_t(y * 4 + v) * ss_with.w + (x * 4 + u);
-          water += wet[q];
-          sky += ss_with.depth[q] == 0.0f;
-        }
-      if (water == 0 || water == 16 || sky > 0) continue;
-      const std::size_t p = std::size_t(y) * shot.w + x;
-      double d = 0.0;
-      for (int k = 0; k < 3; ++k) d += std::abs(int(shot.rgba[p * 4 + k]) - int(ss.rgba[p * 4 + k]));
-      sum += d / 3.0;
-      ++e.pixels;
-    }
-  (void)s;
-  e.mean = e.pixels ? sum / double(e.pixels) : 0.0;
-  return e;
-}
-
 TEST_F(Water, ShorelineIsCloseToSupersampled) {
   const auto s = water_scene::coast_scenario(dem_, 200.0, 128.0, 40.0, 0.0, -5.0, "[-0.4, 0.5, 0.75]");
   const int w = 320, h = 240;
   const Shot ss_with = picture::render(s, 0, ShotSpec{4 * w, 4 * h, "off"});
   const Shot ss_without = picture::render(without_water(s), 0, ShotSpec{4 * w, 4 * h, "off"});
   for (const char* aa : {"fxaa", "off"}) {
-    const ShoreError e = shore_error(s, picture::render(s, 0, ShotSpec{w, h, aa}), ss_with, ss_without);
+    const ShoreError e = water_checks::shore_error(picture::render(s, 0, ShotSpec{w, h, aa}), ss_with, ss_without);
     std::printf("[water shore, generated coast] %s: %lld shore pixels, mean |difference| from 16x SS %.2f levels\n", aa,
                 e.pixels, e.mean);
     EXPECT_GT(e.pixels, 150);
