@@ -53,8 +53,9 @@ Answers ask(HostServices& services, double lat, double lon, double alt, bool swa
   v.max_range_m = 5000.0f;
   v.source = {lat, lon, alt};
   std::vector<std::uint8_t> d = encode_cigi_host_datagram(1, kCigiModeOperate, {}, swap);
-  for (const auto& p : {encode_cigi_hat_hot_request(h, swap)}) d.insert(d.end(), p.begin(), p.end());
+  const auto hp = encode_cigi_hat_hot_request(h, swap);
   const auto vp = encode_cigi_los_vector_request(v, swap);
+  d.insert(d.end(), hp.begin(), hp.end());
   d.insert(d.end(), vp.begin(), vp.end());
   services.take(d);
   // The IG's datagram back, decoded as a host reads it.

@@ -99,7 +99,7 @@ void flat_runs(const RowWindow& win, int w, std::uint32_t& next_label, std::vect
 // holds the component's totals.
 class Regions {
  public:
-  std::uint32_t add(const FlatRun& r, int j, int w, int h) {
+  void add(const FlatRun& r, int j, int w, int h) {
     parent_.push_back(r.label);
     Totals t;
     t.height = r.height;
@@ -111,7 +111,6 @@ class Regions {
     t.first_i = r.begin;
     t.first_j = j;
     totals_.push_back(t);
-    return r.label;
   }
   std::uint32_t find(std::uint32_t x) {
     std::uint32_t root = x;

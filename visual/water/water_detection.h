@@ -45,9 +45,9 @@ struct DetectionRules {
 // (southernmost, then westernmost) sample is met; source() is "auto".
 WaterMap detect_water(const terrain::Heightfield& hf, const DetectionRules& rules = {});
 
-// One flat region as the detection measured it (for ig info --water-candidates
-// style reports and tests): every region of at least min_samples, water or
-// not, with why it was kept or not.
+// One flat region as the detection measured it (the tests, and the shares
+// docs/water.md lists): every region of at least min_samples, water or not,
+// with what decided it.
 struct FlatRegion {
   float height_m = 0.0f;
   std::int64_t samples = 0;
