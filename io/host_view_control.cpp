@@ -30,7 +30,10 @@ std::string apply_view_definition(ChannelSpec& channel, const wire::CigiViewDefi
 }
 
 void HostViewControl::take(std::span<const std::uint8_t> datagram, const ChannelLookup& channels) {
-  const wire::CigiViewPackets packets = wire::decode_cigi_view_packets(datagram);
+  take(wire::decode_cigi_view_packets(datagram), channels);
+}
+
+void HostViewControl::take(const wire::CigiViewPackets& packets, const ChannelLookup& channels) {
   for (wire::QueryReject r : packets.rejects) ++notes_[std::string("view-") + wire::query_reject_name(r)];
   auto apply = [&](const auto& packet, auto&& how) {
     ChannelSpec* spec = channels ? channels(packet.view) : nullptr;

@@ -31,7 +31,8 @@ class HostViewControl {
   // view id -> that channel's settings, nullptr when there is none.
   using ChannelLookup = std::function<ChannelSpec*(std::uint16_t view)>;
   // Every CIGI datagram: its view packets applied in order.
-  void take(std::span<const std::uint8_t> datagram, const ChannelLookup& channels);
+  void take(const wire::CigiViewPackets& packets, const ChannelLookup& channels);
+  void take(std::span<const std::uint8_t> datagram, const ChannelLookup& channels);  // decodes, then the above
   std::uint64_t applied() const { return applied_; }
   const std::map<std::string, std::uint64_t>& notes() const { return notes_; }
   nlohmann::json summary() const { return {{"applied", applied_}, {"notes", notes_}}; }

@@ -2,6 +2,7 @@
 
 #include "io/pose.h"
 #include "io/wire/cigi.h"
+#include "io/wire/cigi_host_datagram.h"
 #include "io/wire/fgnetfdm.h"
 #include "io/wire/native.h"
 
@@ -43,17 +44,20 @@ void PoseIntake::handle(Protocol protocol, std::span<const std::uint8_t> datagra
   wire::DecodeResult r;
   switch (protocol) {
     case Protocol::Native: r = wire::decode_native(datagram); break;
-    case Protocol::Cigi: r = wire::decode_cigi_host_datagram(datagram); break;
+    case Protocol::Cigi: handle_cigi(wire::decode_cigi(datagram), receive_time_s); return;
     case Protocol::FgNetFdm: r = wire::decode_fgnetfdm(datagram); break;
     case Protocol::CanAerospace:
     case Protocol::CanFd: reject(protocol, "not-a-datagram-protocol"); return;
   }
+  finish(protocol, r, receive_time_s);
+}
+
+void PoseIntake::handle_cigi(const wire::CigiHostDatagram& d, double receive_time_s) {
+  wire::DecodeResult r = d.ownship;
   if (r.host_frame) {
     last_host_frame_ = r.host_frame;
     ++ig_controls_;
-  }
-  if (protocol == Protocol::Cigi && r.host_frame) {
-    for (const auto& rc : wire::decode_cigi_host_packets(datagram).rates) {
+    for (const auto& rc : d.host.rates) {
       if (rc.entity != wire::kCigiOwnshipEntity || rc.apply_to_part) continue;
       const bool zero = rc.velocity_mps == glm::dvec3(0.0) && rc.rates_dps == glm::dvec3(0.0);
       cigi_rates_ = zero ? std::nullopt : std::optional(rc);
@@ -68,6 +72,10 @@ void PoseIntake::handle(Protocol protocol, std::span<const std::uint8_t> datagra
       r.pose->has_velocity = r.pose->has_rates = true;
     }
   }
+  finish(Protocol::Cigi, r, receive_time_s);
+}
+
+void PoseIntake::finish(Protocol protocol, const wire::DecodeResult& r, double receive_time_s) {
   if (!r.pose) {
     if (r.reject == wire::Reject::NoPose) {
       ++counters_[int(protocol)].no_pose;

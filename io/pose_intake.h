@@ -17,6 +17,7 @@
 
 #include "io/filter/pose_filter.h"
 #include "io/wire/cigi_environment.h"
+#include "io/wire/cigi_host_datagram.h"
 #include "io/wire/pose_message.h"
 
 namespace ig::io {
@@ -44,6 +45,10 @@ class PoseIntake {
   // Decodes one datagram received at receive_time_s (IG clock) and, when it
   // carries a valid pose, feeds the filter. Never throws.
   void handle(Protocol protocol, std::span<const std::uint8_t> datagram, double receive_time_s);
+  // A CIGI datagram decoded once (wire/cigi_host_datagram.h): its ownship
+  // pose, IG Control and ownship Rate Control. handle(Cigi, ...) decodes and
+  // comes here.
+  void handle_cigi(const wire::CigiHostDatagram& datagram, double receive_time_s);
   // A pose some transport already decoded and validated (CAN): placed and
   // fed like a datagram's pose.
   void handle_pose(Protocol protocol, const wire::PoseMessage& pose, double receive_time_s);
@@ -65,6 +70,7 @@ class PoseIntake {
 
  private:
   void reject(Protocol p, const std::string& reason);
+  void finish(Protocol p, const wire::DecodeResult& r, double receive_time_s);
   PoseFilter& filter_;
   GeodeticToLocal to_local_;
   std::array<SourceCounters, kProtocolCount> counters_;

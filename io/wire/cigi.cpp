@@ -4,6 +4,7 @@
 
 #include "io/wire/byte_io.h"
 #include "io/wire/cigi_byte_order.h"
+#include "io/wire/cigi_host_datagram.h"
 
 namespace ig::io::wire {
 
@@ -21,28 +22,6 @@ std::uint32_t timestamp_10us(double seconds) {
 
 // IG Control bit 2 / Start Of Frame bit 2.
 constexpr std::uint8_t kTimestampValid = 1u << 2;
-// Entity Control byte 4, bit 2: attached to a parent (position is relative).
-constexpr std::uint8_t kEntityAttached = 1u << 2;
-
-// The checks every datagram's first packet passes, in this order: datagram
-// size, opcode, packet size (0 is Truncated, any other wrong size
-// `wrong_size`), major version, byte-swap magic. The byte order, or nullopt
-// with `reject` set.
-std::optional<Order> check_first_packet(std::span<const std::uint8_t> data, std::uint8_t opcode,
-                                        std::size_t packet_size, Reject wrong_size, std::optional<Reject>& reject) {
-  const std::size_t n = data.size();
-  const std::uint8_t* p = data.data();
-  if (n < packet_size) reject = Reject::TooShort;
-  else if (n > kCigiMaxDatagram) reject = Reject::TooLong;
-  else if (p[0] != opcode) reject = Reject::UnknownPacket;
-  else if (p[1] == 0) reject = Reject::Truncated;
-  else if (p[1] != packet_size) reject = wrong_size;
-  else if (p[2] != kCigiMajorVersion) reject = Reject::BadVersion;
-  if (reject) return std::nullopt;
-  const std::optional<Order> order = cigi_order_from_magic(p + 6);
-  if (!order) reject = Reject::BadMagic;
-  return order;
-}
 
 }  // namespace
 
@@ -79,69 +58,7 @@ std::vector<std::uint8_t> encode_cigi_host_datagram(std::uint32_t host_frame, st
   return b;
 }
 
-DecodeResult decode_cigi_host_datagram(std::span<const std::uint8_t> data) {
-  DecodeResult r;
-  // A wrong IG Control size reads as another CIGI version's packet.
-  const auto order = check_first_packet(data, kCigiOpIgControl, kCigiIgControlSize, Reject::BadVersion, r.reject);
-  if (!order) return r;
-  const std::size_t n = data.size();
-  const std::uint8_t* p = data.data();
-  const Order o = *order;
-  r.byte_swapped = (o != bytes::kHostOrder);
-  const std::uint32_t host_frame = bytes::load_u32(p + 8, o);
-  const bool ts_valid = (p[4] & kTimestampValid) != 0;
-  const std::uint32_t ts = bytes::load_u32(p + 12, o);
-  r.host_frame = host_frame;
-  r.ig_mode = p[4] & 0x3u;
-
-  const std::uint8_t* ownship = nullptr;
-  std::size_t off = kCigiIgControlSize;
-  while (off < n) {
-    if (n - off < 2) {
-      r.reject = Reject::Truncated;
-      return r;
-    }
-    const std::uint8_t op = p[off];
-    const std::size_t size = p[off + 1];
-    if (size == 0 || size > n - off) {
-      r.reject = Reject::Truncated;
-      return r;
-    }
-    if (op == kCigiOpEntityControl) {
-      if (size != kCigiEntityControlSize) {
-        r.reject = Reject::Truncated;
-        return r;
-      }
-      const std::uint8_t* ec = p + off;
-      if (bytes::load_u16(ec + 2, o) == kCigiOwnshipEntity && (ec[4] & kEntityAttached) == 0) {
-        ownship = ec;
-      }
-    }
-    // Every other opcode (IG Control repeats included) is skipped by its size.
-    off += size;
-  }
-  if (!ownship) {
-    r.reject = Reject::NoPose;
-    return r;
-  }
-
-  PoseMessage m;
-  m.frame = PoseMessage::Frame::Geodetic;
-  m.roll_deg = bytes::load_f32(ownship + 12, o);
-  m.pitch_deg = bytes::load_f32(ownship + 16, o);
-  m.heading_deg = bytes::load_f32(ownship + 20, o);
-  m.position.x = bytes::load_f64(ownship + 24, o);
-  m.position.y = bytes::load_f64(ownship + 32, o);
-  m.position.z = bytes::load_f64(ownship + 40, o);
-  m.host_frame = host_frame;
-  m.sequence = host_frame;
-  m.has_sequence = true;
-  if (ts_valid) {
-    m.sender_time_s = static_cast<double>(ts) * 1e-5;
-    m.has_sender_time = true;
-  }
-  return finish_decode(m, r);
-}
+DecodeResult decode_cigi_host_datagram(std::span<const std::uint8_t> data) { return decode_cigi(data).ownship; }
 
 std::array<std::uint8_t, kCigiStartOfFrameSize> encode_cigi_start_of_frame(
     std::uint32_t ig_frame, std::uint32_t last_host_frame, std::uint32_t timestamp_10us_value,
@@ -164,7 +81,7 @@ std::array<std::uint8_t, kCigiStartOfFrameSize> encode_cigi_start_of_frame(
 
 StartOfFrameResult decode_cigi_start_of_frame(std::span<const std::uint8_t> data) {
   StartOfFrameResult r;
-  const auto order = check_first_packet(data, kCigiOpStartOfFrame, kCigiStartOfFrameSize, Reject::Truncated, r.reject);
+  const auto order = cigi_check_first_packet(data, kCigiOpStartOfFrame, kCigiStartOfFrameSize, Reject::Truncated, r.reject);
   if (!order) return r;
   const std::uint8_t* p = data.data();
   const Order o = *order;

@@ -13,6 +13,7 @@
 
 #include "io/wire/byte_io.h"
 #include "io/wire/cigi.h"
+#include "io/wire/pose_message.h"
 
 namespace ig::io::wire {
 
@@ -25,6 +26,27 @@ inline std::optional<bytes::Order> cigi_order_from_magic(const std::uint8_t* m) 
 
 // The order to write in: ours, or swapped to match the host's.
 inline bytes::Order cigi_out_order(bool swap) { return swap ? bytes::swapped(bytes::kHostOrder) : bytes::kHostOrder; }
+
+// The checks every datagram's first packet passes, in this order: datagram
+// size, opcode, packet size (0 is Truncated, any other wrong size
+// `wrong_size`), major version, byte-swap magic. The byte order, or nullopt
+// with `reject` set.
+inline std::optional<bytes::Order> cigi_check_first_packet(std::span<const std::uint8_t> data, std::uint8_t opcode,
+                                                          std::size_t packet_size, Reject wrong_size, std::optional<Reject>& reject) {
+  const std::size_t n = data.size();
+  const std::uint8_t* p = data.data();
+  if (n < packet_size) reject = Reject::TooShort;
+  else if (n > kCigiMaxDatagram) reject = Reject::TooLong;
+  else if (p[0] != opcode) reject = Reject::UnknownPacket;
+  else if (p[1] == 0) reject = Reject::Truncated;
+  else if (p[1] != packet_size) reject = wrong_size;
+  else if (p[2] != kCigiMajorVersion) reject = Reject::BadVersion;
+  if (reject) return std::nullopt;
+  const std::optional<bytes::Order> order = cigi_order_from_magic(p + 6);
+  if (!order) reject = Reject::BadMagic;
+  return order;
+}
+
 
 // The sender's order of a host datagram that starts with a well-formed IG
 // Control of our major version and fits the size limit; nullopt otherwise

@@ -8,6 +8,8 @@
 #include "io/wire/byte_io.h"
 #include "io/wire/cigi.h"
 #include "io/wire/cigi_byte_order.h"
+#include "io/wire/cigi_host_datagram.h"
+#include "io/wire/cigi_packet_steps.h"
 #include "io/wire/cigi_views.h"
 
 namespace ig::io::wire {
@@ -193,43 +195,27 @@ const HostPacketKind* host_packet_kind(std::uint8_t op) {
 
 }  // namespace
 
-bool cigi_opcode_supported(std::uint8_t op) {
-  switch (op) {
-    case kCigiOpIgControl:
-    case kCigiOpEntityControl:
-    case kCigiOpViewControl:
-    case kCigiOpViewDefinition:
-    case kCigiOpHatHotRequest:
-    case kCigiOpLosSegmentRequest:
-    case kCigiOpLosVectorRequest: return true;
-    default: return host_packet_kind(op) != nullptr;
+namespace steps {
+
+bool is_host_op(std::uint8_t op) { return host_packet_kind(op) != nullptr; }
+
+void take_host(std::uint8_t op, const std::uint8_t* q, std::size_t size, Order o, CigiHostPackets& out) {
+  const HostPacketKind* kind = host_packet_kind(op);
+  if (size != kind->size) {
+    out.rejects.push_back(QueryReject::WrongSize);
+    return;
   }
+  if (const auto bad = kind->take(q, o, out)) out.rejects.push_back(*bad);
 }
 
-CigiHostPackets decode_cigi_host_packets(std::span<const std::uint8_t> data) {
-  CigiHostPackets out;
-  const auto order = cigi_host_datagram_order(data);
-  if (!order) return out;
-  if (const auto database = std::int8_t(data[3]); database != 0) out.database = database;
-  out.ig_mode = data[4] & 0x3u;
-  const Order o = *order;
-  auto on_packet = [&](std::uint8_t op, const std::uint8_t* q, std::size_t size) {
-    const HostPacketKind* kind = host_packet_kind(op);
-    if (!kind) {
-      if (!cigi_opcode_supported(op)) out.unsupported.push_back(op);
-      return;
-    }
-    if (size != kind->size) {
-      out.rejects.push_back(QueryReject::WrongSize);
-      return;
-    }
-    if (const auto bad = kind->take(q, o, out)) out.rejects.push_back(*bad);
-  };
-  for_each_cigi_host_packet(data, on_packet, [&](std::uint8_t op) {
-    if (host_packet_kind(op)) out.rejects.push_back(QueryReject::Truncated);
-  });
-  return out;
+}  // namespace steps
+
+bool cigi_opcode_supported(std::uint8_t op) {
+  return op == kCigiOpIgControl || steps::is_entity_op(op) || steps::is_view_op(op) || steps::is_request_op(op) ||
+         steps::is_host_op(op);
 }
+
+CigiHostPackets decode_cigi_host_packets(std::span<const std::uint8_t> data) { return decode_cigi(data).host; }
 
 std::array<std::uint8_t, kCigiRateControlSize> encode_cigi_rate_control(const CigiRateControl& r, bool swap) {
   const Order o = cigi_out_order(swap);

@@ -127,6 +127,7 @@ struct CigiPositionRequest {
   bool operator==(const CigiPositionRequest&) const = default;
 };
 inline constexpr std::uint8_t kCigiObjectEntity = 0;
+inline constexpr std::uint8_t kCigiObjectPart = 1;
 inline constexpr std::uint8_t kCigiObjectView = 2;
 
 // Environmental Conditions Request: [2] bits 0-3 request type (1 maritime,

@@ -6,6 +6,8 @@
 #include "io/wire/byte_io.h"
 #include "io/wire/cigi_byte_order.h"
 #include "io/wire/cigi.h"
+#include "io/wire/cigi_host_datagram.h"
+#include "io/wire/cigi_packet_steps.h"
 
 namespace ig::io::wire {
 
@@ -160,40 +162,36 @@ const char* query_reject_name(QueryReject r) {
   return "unknown";
 }
 
-CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const CigiRequestLimits& limits) {
-  CigiRequests out;
-  // The datagram's framing, as decode_cigi_host_datagram checks it.
-  const std::optional<Order> order = cigi_host_datagram_order(data);
-  if (!order) return out;
-  const Order o = *order;
-  out.byte_swapped = o != bytes::kHostOrder;
-  out.host_frame = bytes::load_u32(data.data() + 8, o);
-  auto on_packet = [&](std::uint8_t op, const std::uint8_t* q, std::size_t size) {
-    const std::size_t want = request_size(op);
-    if (want && size != want) {
-      out.rejects.push_back(QueryReject::WrongSize);
-    } else if (want) {
-      auto take = [&](auto decoded) {
-        if (const auto* bad = std::get_if<QueryReject>(&decoded)) {
-          out.rejects.push_back(*bad);
-        } else if (out.requests.size() >= limits.max_requests) {
-          ++out.overflow;
-        } else {
-          std::visit([&](const auto& r) {
-            if constexpr (!std::is_same_v<std::decay_t<decltype(r)>, QueryReject>) out.requests.emplace_back(r);
-          }, decoded);
-        }
-      };
-      if (op == kCigiOpHatHotRequest) take(decode_hat_hot(q, o));
-      else if (op == kCigiOpLosSegmentRequest) take(decode_los_segment(q, o));
-      else take(decode_los_vector(q, o));
+namespace steps {
+
+bool is_request_op(std::uint8_t op) { return request_size(op) != 0; }
+
+void take_request(std::uint8_t op, const std::uint8_t* q, std::size_t size, Order o, const CigiRequestLimits& limits,
+                  CigiRequests& out) {
+  if (size != request_size(op)) {
+    out.rejects.push_back(QueryReject::WrongSize);
+    return;
+  }
+  auto take = [&](auto decoded) {
+    if (const auto* bad = std::get_if<QueryReject>(&decoded)) {
+      out.rejects.push_back(*bad);
+    } else if (out.requests.size() >= limits.max_requests) {
+      ++out.overflow;
+    } else {
+      std::visit([&](const auto& r) {
+        if constexpr (!std::is_same_v<std::decay_t<decltype(r)>, QueryReject>) out.requests.emplace_back(r);
+      }, decoded);
     }
   };
-  // A request opcode where the rest cannot be framed is a truncated request.
-  for_each_cigi_host_packet(data, on_packet, [&](std::uint8_t op) {
-    if (request_size(op)) out.rejects.push_back(QueryReject::Truncated);
-  });
-  return out;
+  if (op == kCigiOpHatHotRequest) take(decode_hat_hot(q, o));
+  else if (op == kCigiOpLosSegmentRequest) take(decode_los_segment(q, o));
+  else take(decode_los_vector(q, o));
+}
+
+}  // namespace steps
+
+CigiRequests decode_cigi_requests(std::span<const std::uint8_t> data, const CigiRequestLimits& limits) {
+  return decode_cigi(data, limits).requests;
 }
 
 std::array<std::uint8_t, kCigiHatHotRequestSize> encode_cigi_hat_hot_request(const HatHotRequest& r, bool swap) {

@@ -5,6 +5,8 @@
 #include "io/wire/byte_io.h"
 #include "io/wire/cigi_byte_order.h"
 #include "io/wire/cigi.h"
+#include "io/wire/cigi_host_datagram.h"
+#include "io/wire/cigi_packet_steps.h"
 
 namespace ig::io::wire {
 
@@ -61,43 +63,38 @@ std::optional<QueryReject> check(const CigiViewDefinition& v) {
 
 }  // namespace
 
-CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) {
-  CigiViewPackets out;
-  // The datagram's framing, as decode_cigi_host_datagram checks it.
-  const std::optional<Order> order = cigi_host_datagram_order(data);
-  if (!order) return out;
-  const Order o = *order;
-  auto view_packet = [](std::uint8_t op) { return op == kCigiOpViewControl || op == kCigiOpViewDefinition; };
-  auto on_packet = [&](std::uint8_t op, const std::uint8_t* q, std::size_t size) {
-    if (!view_packet(op)) return;
-    if (size != 32) {
-      out.rejects.push_back(QueryReject::WrongSize);
-      return;
-    }
-    if (op == kCigiOpViewControl) {
-      CigiViewControl v;
-      v.view = bytes::load_u16(q + 2, o);
-      v.group = q[4];
-      v.entity = bytes::load_u16(q + 6, o);
-      load_six(q, o, q[5], {&v.x_m, &v.y_m, &v.z_m, &v.roll_deg, &v.pitch_deg, &v.yaw_deg});
-      if (const auto bad = check(v)) out.rejects.push_back(*bad);
-      else out.controls.push_back(v);
-    } else {
-      CigiViewDefinition v;
-      v.view = bytes::load_u16(q + 2, o);
-      v.group = q[4];
-      v.mirror = q[5] >> 6;
-      v.orthographic = (q[6] >> 3) & 1u;
-      load_six(q, o, q[5] & 0x3Fu, {&v.near_m, &v.far_m, &v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg});
-      if (const auto bad = check(v)) out.rejects.push_back(*bad);
-      else out.definitions.push_back(v);
-    }
-  };
-  for_each_cigi_host_packet(data, on_packet, [&](std::uint8_t op) {
-    if (view_packet(op)) out.rejects.push_back(QueryReject::Truncated);
-  });
-  return out;
+namespace steps {
+
+bool is_view_op(std::uint8_t op) { return op == kCigiOpViewControl || op == kCigiOpViewDefinition; }
+
+void take_view(std::uint8_t op, const std::uint8_t* q, std::size_t size, Order o, CigiViewPackets& out) {
+  if (size != 32) {
+    out.rejects.push_back(QueryReject::WrongSize);
+    return;
+  }
+  if (op == kCigiOpViewControl) {
+    CigiViewControl v;
+    v.view = bytes::load_u16(q + 2, o);
+    v.group = q[4];
+    v.entity = bytes::load_u16(q + 6, o);
+    load_six(q, o, q[5], {&v.x_m, &v.y_m, &v.z_m, &v.roll_deg, &v.pitch_deg, &v.yaw_deg});
+    if (const auto bad = check(v)) out.rejects.push_back(*bad);
+    else out.controls.push_back(v);
+  } else {
+    CigiViewDefinition v;
+    v.view = bytes::load_u16(q + 2, o);
+    v.group = q[4];
+    v.mirror = q[5] >> 6;
+    v.orthographic = (q[6] >> 3) & 1u;
+    load_six(q, o, q[5] & 0x3Fu, {&v.near_m, &v.far_m, &v.left_deg, &v.right_deg, &v.top_deg, &v.bottom_deg});
+    if (const auto bad = check(v)) out.rejects.push_back(*bad);
+    else out.definitions.push_back(v);
+  }
 }
+
+}  // namespace steps
+
+CigiViewPackets decode_cigi_view_packets(std::span<const std::uint8_t> data) { return decode_cigi(data).views; }
 
 std::array<std::uint8_t, kCigiViewControlSize> encode_cigi_view_control(const CigiViewControl& v, bool swap) {
   const Order o = cigi_out_order(swap);

@@ -14,6 +14,17 @@
 #include "io/wire/cigi_environment.h"
 #include "io/wire/cigi_queries.h"
 #include "io/wire/cigi_views.h"
+#include "io/entities/entity_table.h"
+#include "io/wire/cigi_entities.h"
+#include "io/wire/cigi_host_datagram.h"
+
+// The entity packets of `packet` behind the datagram's own IG Control.
+template <class Packet>
+ig::io::wire::CigiEntityPackets again_entities(std::span<const std::uint8_t> in, const Packet& packet) {
+  std::vector<std::uint8_t> d(in.begin(), in.begin() + std::min<std::size_t>(in.size(), 24));
+  d.insert(d.end(), packet.begin(), packet.end());
+  return ig::io::wire::decode_cigi(d).entities;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace ig::io::wire;
@@ -69,6 +80,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (again(encode_cigi_position_request(pr, swap)).positions.at(0) != pr) __builtin_trap();
   for (const std::uint8_t op : h.unsupported)
     if (cigi_opcode_supported(op)) __builtin_trap();
+  // Entity packets: each one taken re-encodes to itself; the entity table
+  // takes them all and places every entity at finite positions.
+  const CigiHostDatagram whole = decode_cigi(in);
+  for (const CigiEntityControl& e : whole.entities.controls)
+    if (again_entities(in, encode_cigi_entity_control(e, swap)).controls.at(0) != e) __builtin_trap();
+  for (const CigiArticulatedPart& a : whole.entities.parts)
+    if (again_entities(in, encode_cigi_articulated_part(a, swap)).parts.at(0) != a) __builtin_trap();
+  ig::io::EntityTable table([](double lat, double lon, double alt) { return glm::dvec3(lon * 1e5, lat * 1e5, alt); },
+                            [](double, double) { return ig::io::SurfaceSample{100.0, {0.0, 0.0, 1.0}}; });
+  table.take(whole.entities, whole.host.rates, 1.0);
+  for (const auto& p : table.poses_at(2.0, ig::io::Pose{}))
+    if (!std::isfinite(p.pose.position.x + p.pose.position.y + p.pose.position.z)) __builtin_trap();
   (void)decode_cigi_ig_packets(in);
   return 0;
 }

@@ -11,6 +11,7 @@
 #include "io/wire/can_fd_pose.h"
 #include "io/wire/canaerospace.h"
 #include "io/wire/cigi.h"
+#include "io/wire/cigi_entities.h"
 #include "io/wire/cigi_environment.h"
 #include "io/wire/fgnetfdm.h"
 #include "io/wire/native.h"
@@ -67,6 +68,18 @@ int main(int argc, char** argv) {
       add(encode_cigi_position_request({{0, 0, kCigiObjectEntity, 0}, true}, swap));
       add(encode_cigi_collision_segment({0, 1, true, {0, 0, 0}, {0, 0, 500}, 0}, swap));
       add(encode_cigi_environment_request({kCigiConditionsWeather, 1, {36.7, -118.0, 2000.0}}, swap));
+      CigiEntityControl wingman;
+      wingman.entity = 2;
+      wingman.type = 1;
+      wingman.attached = true;
+      wingman.clamp = CigiClamp::NonConformal;
+      wingman.position = {-20.0, 10.0, 0.0};
+      add(encode_cigi_entity_control(wingman, swap));
+      CigiArticulatedPart turret;
+      turret.entity = 2;
+      turret.yaw_deg = 30.0f;
+      add(encode_cigi_articulated_part(turret, swap));
+      add(encode_cigi_rate_control({2, 0, false, false, {10, 0, 0}, {0, 0, 1}}, swap));
     }
     write(out / "cigi", i, c.data(), c.size());
     const auto f = ig::io::wire::encode_fgnetfdm(m);
