@@ -35,8 +35,9 @@ void HostEnvironment::message(const std::string& text) {
   if (announced_.insert(text).second) messages_.push_back(text);
 }
 
-void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
-  CigiHostPackets p = decode_cigi_host_packets(datagram);
+void HostEnvironment::take(std::span<const std::uint8_t> datagram) { take(decode_cigi_host_packets(datagram)); }
+
+void HostEnvironment::take(const CigiHostPackets& p) {
   if (!p.ig_mode) return;  // not a host datagram: the pose intake counts it
   const std::uint32_t mode = *p.ig_mode == kCigiModeStandby ? kCigiModeStandby : kCigiModeOperate;
   if (mode == kCigiModeStandby && ig_mode_ != kCigiModeStandby) {
@@ -76,12 +77,9 @@ void HostEnvironment::take(std::span<const std::uint8_t> datagram) {
   }
   for (const auto& s : p.segments) {
     ++counters_.packets["collision_segments"];
-    if (s.entity != kCigiOwnshipEntity) {
-      ++counters_.rejected["segment-not-on-ownship"];
-      continue;
-    }
-    if (s.enabled) segments_[s.segment] = s;
-    else segments_.erase(s.segment);
+    const auto key = std::make_pair(int(s.entity), int(s.segment));
+    if (s.enabled) segments_[key] = s;
+    else segments_.erase(key);
   }
   counters_.packets["conditions_requests"] += p.conditions.size();
   conditions_.insert(conditions_.end(), p.conditions.begin(), p.conditions.end());
@@ -120,7 +118,11 @@ std::optional<CigiPositionResponse> HostEnvironment::position_of(const CigiPosit
                                                                  std::span<const io::Pose> views) const {
   const io::Pose* pose = nullptr;
   const CigiObjectRef& of = r.of;
+  std::optional<io::Pose> entity;
   if (of.object_class == kCigiObjectEntity && of.object == kCigiOwnshipEntity) pose = &ownship;
+  else if (of.object_class == kCigiObjectEntity && entity_lookup_) entity = entity_lookup_(of.object, std::nullopt);
+  else if (of.object_class == kCigiObjectPart && entity_lookup_) entity = entity_lookup_(of.object, of.part);
+  if (entity) pose = &*entity;
   if (of.object_class == kCigiObjectView && of.object < views.size()) pose = &views[of.object];
   if (!pose || !to_geodetic_) return std::nullopt;
   const auto g = to_geodetic_(pose->position);
@@ -145,8 +147,8 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
     const auto p = position_of(r, ownship, views);
     if (!p) {
       ++counters_.rejected["position-of-unknown-object"];
-      message(std::string("Position Request: this IG knows entity 0 and the views only, not ") +
-              object_class_name(r.of.object_class) + " " + std::to_string(r.of.object));
+      message(std::string("Position Request: no such ") + object_class_name(r.of.object_class) + " " +
+              std::to_string(r.of.object) + " (entities: active ones; views: the channels)");
       return;
     }
     if (!fits(kCigiPositionResponseSize)) return;
@@ -157,14 +159,22 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
   one_shot_.clear();
   for (const auto& [key, r] : continuous_) answer_position(r);
 
-  for (const auto& [id, s] : segments_) {
+  for (const auto& [key, s] : segments_) {
+    // Cast from the segment's entity (the ownship, or an entity the IG has now).
+    std::optional<io::Pose> from;
+    if (s.entity == kCigiOwnshipEntity) from = ownship;
+    else if (entity_lookup_) from = entity_lookup_(s.entity, std::nullopt);
+    if (!from) {
+      ++counters_.rejected["segment-of-unknown-entity"];
+      continue;
+    }
     LosSegmentRequest q;
     q.extended = true;
     q.source_coords = q.destination_coords = CigiCoords::Entity;
     q.entity = kCigiOwnshipEntity;
     q.source = s.start;
     q.destination = s.end;
-    const auto answer = services_.answer(q, ownship);
+    const auto answer = services_.cast_collision_segment(q, *from);
     const auto* los = std::get_if<LosResponse>(&answer);
     if (!los || !los->valid || !los->range_valid || !fits(kCigiCollisionSegmentNotificationSize)) continue;
     CigiCollisionNotification n;

@@ -33,7 +33,8 @@ class HostEnvironment {
   HostEnvironment(HostServices& services, LocalToGeodetic to_geodetic, double visibility_m);
 
   // Every datagram from the CIGI host.
-  void take(std::span<const std::uint8_t> datagram);
+  void take(const io::wire::CigiHostPackets& packets);
+  void take(std::span<const std::uint8_t> datagram);  // decodes, then the above
 
   // What the host changed since the last call, for the frame about to render.
   struct Changes {
@@ -58,6 +59,12 @@ class HostEnvironment {
   void append_frame_packets(const io::Pose& ownship, std::span<const io::Pose> views, double visibility_m,
                             std::vector<std::uint8_t>& out, std::size_t max_bytes);
 
+  // Where entity `id` (part: its articulated part) is now; nullopt when the
+  // IG has no such active entity. Unset: only the ownship and the views
+  // are known.
+  using EntityLookup = std::function<std::optional<io::Pose>(std::uint16_t id, std::optional<std::uint8_t> part)>;
+  void set_entity_lookup(EntityLookup lookup) { entity_lookup_ = std::move(lookup); }
+
   // The IG's own notices to the host (a refused database load, an opcode
   // not supported, ...): each text sent once, with the next frame.
   void message(const std::string& text);
@@ -73,7 +80,8 @@ class HostEnvironment {
   // The IG mode the host asks for (IG Control): reset / standby (0) or
   // operate (1; debug counts as operate), as the Start Of Frame reports it.
   // Entering reset / standby from operate drops what the host had set up:
-  // continuous Position Requests and collision segments.
+  // continuous Position Requests and collision segments (the live loop
+  // drops the entities).
   std::uint32_t ig_mode() const { return ig_mode_; }
   nlohmann::json summary() const;
 
@@ -90,7 +98,8 @@ class HostEnvironment {
   double visibility_in_force_m_;
   std::vector<io::wire::CigiPositionRequest> one_shot_;
   std::map<std::pair<int, int>, io::wire::CigiPositionRequest> continuous_;  // (class, object)
-  std::map<int, io::wire::CigiCollisionSegment> segments_;                  // the ownship's, by id
+  std::map<std::pair<int, int>, io::wire::CigiCollisionSegment> segments_;  // (entity, segment id)
+  EntityLookup entity_lookup_;
   std::vector<io::wire::CigiEnvironmentRequest> conditions_;
   std::vector<std::string> messages_;  // to send
   std::set<std::string> announced_;    // every text queued so far

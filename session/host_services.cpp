@@ -61,8 +61,9 @@ HostServices::HostServices(const terrain::Heightfield& hf, double earth_radius_m
       to_geodetic_(std::move(to_geodetic)),
       options_(options) {}
 
-void HostServices::take(std::span<const std::uint8_t> datagram) {
-  const CigiRequests r = decode_cigi_requests(datagram);
+void HostServices::take(std::span<const std::uint8_t> datagram) { take(decode_cigi_requests(datagram)); }
+
+void HostServices::take(const CigiRequests& r) {
   if (!r.host_frame) return;  // not a host datagram: the pose intake counts it
   host_frame_ = *r.host_frame;
   for (QueryReject why : r.rejects) drop(query_reject_name(why));
@@ -143,7 +144,20 @@ std::vector<std::uint8_t> HostServices::frame_datagram(const std::array<std::uin
 
 CigiResponse HostServices::answer(const CigiRequest& request, const io::Pose& ownship) {
   ++counters_.answered;
-  CigiResponse r = std::visit(
+  ++(std::holds_alternative<HatHotRequest>(request) ? counters_.answered_hat_hot : counters_.answered_los);
+  CigiResponse r = respond(request, ownship);
+  const bool valid = std::visit([](const auto& a) { return a.valid; }, r);
+  if (!valid) ++counters_.invalid;
+  return r;
+}
+
+CigiResponse HostServices::cast_collision_segment(const LosSegmentRequest& segment, const io::Pose& ownship) {
+  ++counters_.collision_casts;
+  return respond(segment, ownship);
+}
+
+CigiResponse HostServices::respond(const CigiRequest& request, const io::Pose& ownship) {
+  return std::visit(
       [&](const auto& q) -> CigiResponse {
         using T = std::decay_t<decltype(q)>;
         if constexpr (std::is_same_v<T, HatHotRequest>) return hat_hot(q, ownship);
@@ -151,9 +165,6 @@ CigiResponse HostServices::answer(const CigiRequest& request, const io::Pose& ow
         else return los_vector(q, ownship);
       },
       request);
-  const bool valid = std::visit([](const auto& a) { return a.valid; }, r);
-  if (!valid) ++counters_.invalid;
-  return r;
 }
 
 std::optional<std::array<std::uint8_t, kNativeQuerySize>> HostServices::answer_native(
@@ -329,6 +340,9 @@ nlohmann::json HostServices::summary() const {
           {"periodic_answers", counters_.periodic_answers},
           {"cancelled", counters_.cancelled},
           {"native_answered", counters_.native_answered},
+          {"answered_hat_hot", counters_.answered_hat_hot},
+          {"answered_los", counters_.answered_los},
+          {"collision_casts", counters_.collision_casts},
           {"dropped", counters_.dropped},
           {"pending", queue_.size()},
           {"periodic", periodic_.size()},

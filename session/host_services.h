@@ -59,7 +59,8 @@ class HostServices {
   void set_drawn_height(DrawnHeight f) { drawn_height_ = std::move(f); }
 
   // Every datagram from the CIGI host: its requests are queued.
-  void take(std::span<const std::uint8_t> datagram);
+  void take(const io::wire::CigiRequests& requests);
+  void take(std::span<const std::uint8_t> datagram);  // decodes, then the above
 
   // This frame's answers: the due periodic requests, then the queue in
   // arrival order, up to the budget. `ownship` is the pose the frame
@@ -78,10 +79,15 @@ class HostServices {
 
   // One request answered now, outside the queue and the budget (library use).
   io::wire::CigiResponse answer(const io::wire::CigiRequest& request, const io::Pose& ownship);
+  // A collision segment cast for the IG's own notifications: the same
+  // answer, counted as a cast, not as a host request answered.
+  io::wire::CigiResponse cast_collision_segment(const io::wire::LosSegmentRequest& segment, const io::Pose& ownship);
 
   struct Counters {
     std::uint64_t requests = 0;     // well-formed requests taken
-    std::uint64_t answered = 0;     // responses produced
+    std::uint64_t answered = 0;     // responses to host requests (CIGI and native)
+    std::uint64_t answered_hat_hot = 0, answered_los = 0;  // the CIGI ones by kind
+    std::uint64_t collision_casts = 0;  // segments cast for collision notifications (not requests)
     std::uint64_t invalid = 0;      // responses with the valid flag clear
     std::uint64_t deferred = 0;     // answered in a later frame than received (budget)
     std::uint64_t periodic_answers = 0;
@@ -95,6 +101,9 @@ class HostServices {
   double last_frame_ms() const { return last_frame_ms_; }
   nlohmann::json summary() const;
   const terrain::TerrainQuery& terrain() const { return query_; }
+  // The surface HAT/HOT is answered from at a local point (water at its
+  // level; as drawn when set so): what entities are clamped to.
+  std::optional<terrain::SurfacePoint> surface_at(double x_m, double y_m) const { return surface_for_hot(x_m, y_m); }
 
  private:
   struct Pending {
@@ -114,6 +123,7 @@ class HostServices {
   void fill_hit(io::wire::LosResponse& out, const std::optional<terrain::LosHit>& hit, io::wire::CigiCoords coords,
                 const io::Pose& ownship);
   static int kind(const io::wire::CigiRequest& r) { return int(r.index()); }
+  io::wire::CigiResponse respond(const io::wire::CigiRequest& request, const io::Pose& ownship);
   // The surface a HAT/HOT is answered from (full resolution, or as drawn).
   std::optional<terrain::SurfacePoint> surface_for_hot(double x_m, double y_m) const;
 

@@ -28,6 +28,7 @@ int be16(const std::uint8_t* p) { return (int(p[0]) << 8) | p[1]; }
 
 struct Client {
   int fd = -1;
+  bool may_write = true;  // its address is one writes are taken from
   std::vector<std::uint8_t> buf;
   Clock::time_point last_activity = Clock::now();
   std::optional<Clock::time_point> partial_since;  // a request has started but is not complete
@@ -151,7 +152,7 @@ void ModbusServer::run() {
   };
 
   // Answers one complete request. false: the client must be closed (send failed).
-  auto handle = [&](int fd, const std::uint8_t* req, int len) -> bool {
+  auto handle = [&](int fd, bool may_write, const std::uint8_t* req, int len) -> bool {
     modbus_set_socket(m.ctx, fd);
     const int fc = req[header];
     int rc = 0;
@@ -163,6 +164,10 @@ void ModbusServer::run() {
     const bool is_read = fc == MODBUS_FC_READ_HOLDING_REGISTERS || fc == MODBUS_FC_READ_INPUT_REGISTERS;
     if (!is_read && fc != MODBUS_FC_WRITE_SINGLE_REGISTER && fc != MODBUS_FC_WRITE_MULTIPLE_REGISTERS) {
       fail(MODBUS_EXCEPTION_ILLEGAL_FUNCTION);
+    } else if (!is_read && !may_write) {
+      fail(MODBUS_EXCEPTION_ILLEGAL_FUNCTION);  // writes only from the allowed addresses
+      std::lock_guard lock(m.mutex);
+      ++m.counters.writes_refused;
     } else if (len < header + 5) {
       fail(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE);
     } else {
@@ -251,8 +256,14 @@ void ModbusServer::run() {
     if (FD_ISSET(m.wake[0], &rd)) break;
     if (n > 0 && FD_ISSET(m.listen_fd, &rd)) {
       for (;;) {
-        const int fd = accept4(m.listen_fd, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        sockaddr_in peer{};
+        socklen_t peer_size = sizeof peer;
+        const int fd =
+            accept4(m.listen_fd, reinterpret_cast<sockaddr*>(&peer), &peer_size, SOCK_NONBLOCK | SOCK_CLOEXEC);
         if (fd < 0) break;
+        const auto& writers = m.options.writers;
+        const bool may_write =
+            writers.empty() || std::find(writers.begin(), writers.end(), peer.sin_addr.s_addr) != writers.end();
         const int one = 1;
         setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
         std::lock_guard lock(m.mutex);
@@ -262,7 +273,7 @@ void ModbusServer::run() {
           ++m.counters.clients_dropped;
           continue;
         }
-        clients.push_back(Client{fd, {}, Clock::now(), std::nullopt});
+        clients.push_back(Client{fd, may_write, {}, Clock::now(), std::nullopt});
         clients_ = int(clients.size());
       }
     }
@@ -288,7 +299,7 @@ void ModbusServer::run() {
             }
             const std::size_t total = 6 + std::size_t(length);
             if (c.buf.size() - off < total) break;
-            if (!handle(c.fd, p, int(total))) close_it = dropped = true;
+            if (!handle(c.fd, c.may_write, p, int(total))) close_it = dropped = true;
             off += total;
           }
           c.buf.erase(c.buf.begin(), c.buf.begin() + std::ptrdiff_t(std::min(off, c.buf.size())));

@@ -20,6 +20,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "io/control/ig_status.h"
 #include "io/control/register_map.h"
@@ -32,6 +33,9 @@ struct ModbusServerOptions {
   int max_clients = 64;                // more connections are accepted and closed at once
   double request_timeout_s = 1.0;      // a started request must be complete within this
   double idle_timeout_s = 300.0;       // a silent client is closed after this
+  // Addresses (IPv4, network byte order) writes are taken from; a write from
+  // any other gets ILLEGAL_FUNCTION and changes nothing. Empty: anyone.
+  std::vector<std::uint32_t> writers;
 };
 
 // "ADDR:PORT" (ADDR may be empty: ":1502" = all interfaces). Throws
@@ -42,6 +46,7 @@ struct ModbusServerCounters {
   std::uint64_t requests = 0;         // answered requests (replies + exceptions)
   std::uint64_t exceptions = 0;       // answered with an exception
   std::uint64_t writes_applied = 0;   // accepted FC 06 / 16 writes
+  std::uint64_t writes_refused = 0;   // FC 06 / 16 from an address not allowed to write
   std::uint64_t clients_accepted = 0;
   std::uint64_t clients_dropped = 0;  // closed by the server: garbage, timeout, full, send failure
 };

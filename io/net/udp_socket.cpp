@@ -192,8 +192,14 @@ bool UdpReceiver::wait_readable(double timeout_s) const {
   return ::poll(&p, 1, ms) > 0 && (p.revents & POLLIN);
 }
 
-UdpSender::UdpSender(const std::string& destination, const std::string& interface_address)
+UdpSender::UdpSender(const std::string& destination, const std::string& interface_address,
+                     const std::optional<std::string>& from)
     : fd_(0, destination), destination_(parse_endpoint(destination)) {
+  if (from) {
+    const sockaddr_in local = parse_endpoint(*from);
+    if (bind(fd_.get(), reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0)
+      throw NetError("udp send from " + *from + ": bind: " + std::strerror(errno));
+  }
   if (is_multicast(destination_)) {
     const in_addr itf = parse_address(interface_address, "multicast interface");
     setsockopt(fd_.get(), IPPROTO_IP, IP_MULTICAST_IF, &itf, sizeof itf);

@@ -82,7 +82,10 @@ class UdpSender {
  public:
   // Unicast or multicast destination; multicast goes out on
   // `interface_address` with TTL 1 and loopback enabled.
-  explicit UdpSender(const std::string& destination, const std::string& interface_address = "127.0.0.1");
+  // `from`: send from this ADDR:PORT (a host that must be told apart by its
+  // socket); default: any port the kernel picks.
+  explicit UdpSender(const std::string& destination, const std::string& interface_address = "127.0.0.1",
+                     const std::optional<std::string>& from = std::nullopt);
   // false when the kernel refused (counted by the caller); never throws.
   bool send(std::span<const std::uint8_t> datagram);
   bool send_to(std::span<const std::uint8_t> datagram, const sockaddr_in& to);

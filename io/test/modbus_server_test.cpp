@@ -280,6 +280,35 @@ TEST(ModbusServer, BadWritesAreRejectedAndChangeNothing) {
 }
 
 // 16 clients at 100 Hz for 2 s while a fake 60 Hz frame loop publishes.
+// Writes only from the allowed addresses: a client on loopback when only
+// 192.0.2.1 (TEST-NET-1) may write gets exception 01 for every write, and
+// nothing changes; its reads are answered. Allowed, the same write lands.
+TEST(ModbusServer, WritesOnlyFromAllowedAddresses) {
+  ModbusServerOptions o;
+  o.address = "127.0.0.1";
+  o.port = 0;
+  o.writers = {inet_addr("192.0.2.1")};
+  ModbusServer refusing(o, IgControls{});
+  {
+    Client c(refusing.port());
+    EXPECT_EQ(c.write(hold::kFreeze, {1}), EMBXILFUN);
+    EXPECT_EQ(c.write_f32(hold::kAlpha, 500.f), EMBXILFUN);
+    EXPECT_EQ(c.holding(hold::kFreeze, 1)[0], 0);  // reads: anyone
+    EXPECT_FALSE(refusing.take_controls().any());
+    EXPECT_FALSE(refusing.controls().freeze);
+  }
+  const auto refused = refusing.counters();
+  EXPECT_EQ(refused.writes_refused, 2u);
+  EXPECT_EQ(refused.writes_applied, 0u);
+
+  o.writers.push_back(inet_addr("127.0.0.1"));
+  ModbusServer allowing(o, IgControls{});
+  Client c(allowing.port());
+  EXPECT_EQ(c.write(hold::kFreeze, {1}), 0);
+  EXPECT_TRUE(allowing.take_controls().controls.freeze);
+  EXPECT_EQ(allowing.counters().writes_refused, 0u);
+}
+
 TEST(ModbusServer, SixteenClientsPollWhileFramesArePublished) {
   auto server = make_server();
   std::atomic<bool> done{false};

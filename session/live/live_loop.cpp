@@ -17,8 +17,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/entities/entity_table.h"
 #include "io/host_view_control.h"
+#include "io/net/sender_filter.h"
 #include "io/net/udp_socket.h"
+#include "io/wire/cigi_host_datagram.h"
 #include "io/recording.h"
 #include "io/utc_time.h"
 #include "io/wire/cigi.h"
@@ -62,6 +65,7 @@ std::vector<io::Pose> view_poses(ScenarioRunner& runner) {
 struct Source {
   io::Protocol protocol;
   std::unique_ptr<io::net::UdpReceiver> socket;
+  io::net::SenderFilter senders;
 };
 
 }  // namespace
@@ -71,8 +75,12 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   if (s.latency == io::LatencyMode::Synchronous && !s.cigi)
     throw std::runtime_error("latency mode sync is CIGI synchronous operation: it needs --cigi");
   std::vector<Source> sources;
+  std::vector<io::net::HostPattern> hosts;
+  for (const auto& h : s.hosts) hosts.push_back(io::net::parse_host_pattern(h));
   auto open = [&](const std::optional<std::string>& ep, io::Protocol p) {
-    if (ep) sources.push_back({p, std::make_unique<io::net::UdpReceiver>(source_endpoint(*ep, s.multicast))});
+    if (ep)
+      sources.push_back(
+          {p, std::make_unique<io::net::UdpReceiver>(source_endpoint(*ep, s.multicast)), io::net::SenderFilter(hosts)});
   };
   open(s.udp, io::Protocol::Native);
   open(s.cigi, io::Protocol::Cigi);
@@ -112,11 +120,30 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   if (cigi_source)
     environment = std::make_unique<HostEnvironment>(*services, local_to_geodetic(runner.heightfield()),
                                                     runner.scene().shading().fog_visibility_m);
+  // Every entity the host places besides the ownship, clamped to the
+  // surface host queries answer from.
+  std::unique_ptr<io::EntityTable> entities;
+  double entity_time_s = 0.0;  // the time entities are placed at: the frame's start
+  io::Pose frame_pose = initial;
+  if (environment) {
+    entities = std::make_unique<io::EntityTable>(
+        geodetic_placer(runner.heightfield()), [&services](double x, double y) -> std::optional<io::SurfaceSample> {
+          const auto s = services->surface_at(x, y);
+          if (!s) return std::nullopt;
+          return io::SurfaceSample{s->height_m, s->normal};
+        });
+    environment->set_entity_lookup([&](std::uint16_t id, std::optional<std::uint8_t> part) -> std::optional<io::Pose> {
+      if (part) return entities->part_pose_of(id, *part, entity_time_s, frame_pose);
+      const auto e = entities->pose_of(id, entity_time_s, frame_pose);
+      return e ? std::optional(e->pose) : std::nullopt;
+    });
+  }
+  std::size_t entities_placed_max = 0;  // the most entities one frame placed
   DrawnSurface drawn(runner);
   if (services && s.host_surface_drawn)
     services->set_drawn_height([&drawn](double x, double y) { return drawn.level0_height_at(x, y); });
   std::unique_ptr<ControlSurface> control;  // Modbus
-  if (s.modbus) control = make_modbus_surface(*s.modbus, runner, s.latency, s.quiet);
+  if (s.modbus) control = make_modbus_surface(*s.modbus, s.modbus_writers, runner, s.latency, s.quiet);
   std::optional<io::Pose> last_pose;  // for freeze
   std::unique_ptr<ExtraPoseSource> extra_source;  // SocketCAN
   if (s.can) extra_source = make_can_source(*s.can);
@@ -137,19 +164,42 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   HeapTrim heap_trim(10.0);
   std::uint64_t sync_waits = 0, sync_frames = 0;
   std::optional<std::array<std::uint8_t, io::wire::kCigiStartOfFrameSize>> last_sof;
+  // Datagrams from anyone but the source's host are counted and dropped,
+  // with one line the first time.
+  auto accept_sender = [&](Source& src, const sockaddr_in& from) {
+    const auto verdict = src.senders.check(from);
+    const char* name = io::protocol_name(src.protocol);
+    if (verdict == io::net::SenderFilter::Verdict::LockedOn && !s.quiet)
+      std::cerr << "ig serve: " << name << ": taking datagrams from " << io::net::to_string(from)
+                << " only (the first sender; --host ADDR[:PORT] names the host)\n";
+    if (verdict == io::net::SenderFilter::Verdict::FirstForeign)
+      std::cerr << "ig serve: " << name << ": a datagram from " << io::net::to_string(from)
+                << ", not the host: dropped; every such datagram is counted (foreign_datagrams)\n";
+    return io::net::SenderFilter::accepted(verdict);
+  };
   auto poll_source = [&](Source& src, std::size_t max_datagrams) {
     return src.socket->poll(
         [&](std::span<const std::uint8_t> d, double t, const sockaddr_in& from) {
+          // Native queries change nothing: answered to whoever asks.
           if (services && src.protocol == io::Protocol::Native && io::wire::is_native_query(d)) {
             if (const auto answer = services->answer_native(d)) src.socket->send_to(*answer, from);
             return;
           }
+          if (!accept_sender(src, from)) return;
           if (recorder) recorder->write(src.protocol, d, t);
-          feed.intake().handle(src.protocol, d, t);
-          if (src.protocol == io::Protocol::Cigi) {
-            if (services && cigi_reply) services->take(d);  // answered only with somewhere to send them
-            views.take(d, channel_spec);
-            if (environment) environment->take(d);
+          if (src.protocol != io::Protocol::Cigi) {
+            feed.intake().handle(src.protocol, d, t);
+            return;
+          }
+          // One decode; each part takes its packets.
+          const io::wire::CigiHostDatagram cigi = io::wire::decode_cigi(d);
+          feed.intake().handle_cigi(cigi, t);
+          if (services && cigi_reply) services->take(cigi.requests);  // answered only with somewhere to send them
+          views.take(cigi.views, channel_spec);
+          if (environment) environment->take(cigi.host);
+          if (entities) {
+            if (cigi.host.ig_mode == io::wire::kCigiModeStandby) entities->clear();  // reset: the host starts over
+            entities->take(cigi.entities, cigi.host.rates, t);
           }
         },
         max_datagrams);
@@ -215,6 +265,12 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
     last_pose = pose;
     const double pose_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (environment) apply_host_environment(*environment, runner, frame_start - start, pose);
+    if (entities) {
+      entity_time_s = frame_start;
+      frame_pose = pose;
+      entities_placed_max = std::max(entities_placed_max, entities->poses_at(entity_time_s, pose).size());
+      for (const auto& m : entities->take_messages()) environment->message(m);
+    }
     const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
     const double complete = io::net::steady_now_s();  // the renderer ends with glFinish
     feed.frame_complete(complete);
@@ -248,20 +304,33 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
       next_tick = io::net::steady_now_s();
     }
   }
-  std::uint64_t kernel_stamped = 0, datagrams = 0;
+  std::uint64_t kernel_stamped = 0, datagrams = 0, foreign = 0;
+  nlohmann::json senders = nlohmann::json::object();
   for (const auto& src : sources) {
     kernel_stamped += src.socket->stats().kernel_timestamps;
     datagrams += src.socket->stats().datagrams;
+    foreign += src.senders.foreign();
+    auto& entry = senders[io::protocol_name(src.protocol)];
+    entry["foreign_datagrams"] = src.senders.foreign();
+    if (const auto locked = src.senders.locked()) entry["locked_onto"] = *locked;
   }
+  nlohmann::json allowed = nlohmann::json::array();
+  for (const auto& h : hosts) allowed.push_back(io::net::to_string(h));
   nlohmann::json extra = {{"pose_intake", feed.summary()},
                           {"rate_hz", s.rate_hz},
                           {"latency_mode", io::latency_mode_name(feed.filter().latency_mode())},
                           {"datagrams", datagrams},
+                          {"foreign_datagrams", foreign},
+                          {"senders", {{"hosts", allowed}, {"sources", senders}}},
                           {"kernel_receive_timestamps", kernel_stamped}};
   if (cigi_source) extra["cigi_sync"] = {{"frames", sync_frames}, {"waits", sync_waits}};
   if (services) extra["host_services"] = services->summary();
   if (cigi_source) extra["view_control"] = views.summary();
   if (environment) extra["cigi"] = environment->summary();
+  if (entities) {
+    extra["entities"] = entities->summary();
+    extra["entities"]["placed_max"] = entities_placed_max;
+  }
   if (recorder) extra["recording"] = {{"file", *s.record}, {"datagrams", recorder->count()}};
   if (extra_source) extra[extra_source->summary_key()] = extra_source->summary();
   if (control) extra["modbus"] = control->summary();

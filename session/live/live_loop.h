@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/filter/pose_filter.h"
 #include "io/scenario.h"
@@ -23,6 +24,11 @@ struct LiveSettings {
   // Pose sources and replies: ADDR:PORT each (ADDR may be empty: all interfaces).
   std::optional<std::string> udp, cigi, cigi_reply, fgfdm;
   std::optional<std::string> multicast;  // every UDP source binds GROUP:PORT and joins the group
+  // The hosts every UDP pose source takes datagrams from (ADDR or ADDR:PORT);
+  // empty: each source locks onto its first sender. Others: counted, dropped.
+  std::vector<std::string> hosts;
+  // Addresses Modbus writes are taken from (reads: anyone); empty: any.
+  std::vector<std::string> modbus_writers;
   std::optional<std::string> record;     // write every received datagram here
   std::optional<std::string> modbus;     // Modbus TCP server endpoint
   std::optional<CanSourceSettings> can;  // SocketCAN pose source

@@ -7,9 +7,12 @@
 
 #include <stdexcept>
 
+#include "io/net/sender_filter.h"
+
 namespace ig::session {
 
-ModbusLink::ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet)
+ModbusLink::ModbusLink(const std::string& endpoint, const std::vector<std::string>& writers, ScenarioRunner& runner,
+                       io::LatencyMode initial_latency, bool quiet)
     : runner_(runner), quiet_(quiet) {
   const auto& r = runner.scenario().render;
   active_.a1 = float(r.twolevel.a1);
@@ -18,10 +21,16 @@ ModbusLink::ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::
   active_.level0_budget = std::uint32_t(r.twolevel.level0_budget);
   active_.fog_visibility_m = float(r.shading.fog_visibility_m);
   active_.latency_mode = std::uint16_t(initial_latency);
-  server_ = std::make_unique<io::control::ModbusServer>(io::control::parse_modbus_endpoint(endpoint), active_);
+  auto options = io::control::parse_modbus_endpoint(endpoint);
+  for (const auto& w : writers) {
+    const auto host = io::net::parse_host_pattern(w);
+    if (host.port) throw std::invalid_argument("--modbus-writer " + w + ": an address, without a port");
+    options.writers.push_back(host.address);
+  }
+  server_ = std::make_unique<io::control::ModbusServer>(options, active_);
   if (!quiet_)
     std::cerr << "ig serve: Modbus TCP on " << endpoint.substr(0, endpoint.rfind(':')) << ":" << server_->port()
-              << "\n";
+              << (writers.empty() ? " (writes from any address; --modbus-writer ADDR limits them)" : "") << "\n";
 }
 
 ModbusLink::Applied ModbusLink::apply_controls() {
@@ -109,6 +118,7 @@ nlohmann::json ModbusLink::summary() const {
           {"requests", c.requests},
           {"exceptions", c.exceptions},
           {"writes_applied", c.writes_applied},
+          {"writes_refused", c.writes_refused},
           {"clients_accepted", c.clients_accepted},
           {"clients_dropped", c.clients_dropped}};
 }
@@ -121,9 +131,10 @@ void check_modbus_endpoint(const std::string& endpoint) {
   }
 }
 
-std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, ScenarioRunner& runner,
-                                                    io::LatencyMode initial_latency, bool quiet) {
-  return std::make_unique<ModbusLink>(endpoint, runner, initial_latency, quiet);
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, const std::vector<std::string>& writers,
+                                                    ScenarioRunner& runner, io::LatencyMode initial_latency,
+                                                    bool quiet) {
+  return std::make_unique<ModbusLink>(endpoint, writers, runner, initial_latency, quiet);
 }
 
 }  // namespace ig::session

@@ -24,7 +24,9 @@ namespace ig::session {
 class ModbusLink final : public ControlSurface {
  public:
   // initial_latency: the mode the run starts in (the latency_mode register's first value).
-  ModbusLink(const std::string& endpoint, ScenarioRunner& runner, io::LatencyMode initial_latency, bool quiet);
+  // writers: addresses writes are taken from (empty: any).
+  ModbusLink(const std::string& endpoint, const std::vector<std::string>& writers, ScenarioRunner& runner,
+             io::LatencyMode initial_latency, bool quiet);
 
   // Before rendering: freeze, wireframe, thresholds, fog, rebuilds, latency mode.
   Applied apply_controls() override;

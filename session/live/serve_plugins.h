@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -63,7 +64,9 @@ class ControlSurface {
 // Throws std::invalid_argument (message "--modbus ...") for a malformed
 // endpoint, or when built without Modbus.
 void check_modbus_endpoint(const std::string& endpoint);
-std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, ScenarioRunner& runner,
-                                                    io::LatencyMode initial_latency, bool quiet);
+// writers: the addresses Modbus writes are taken from (empty: any).
+std::unique_ptr<ControlSurface> make_modbus_surface(const std::string& endpoint, const std::vector<std::string>& writers,
+                                                    ScenarioRunner& runner, io::LatencyMode initial_latency,
+                                                    bool quiet);
 
 }  // namespace ig::session

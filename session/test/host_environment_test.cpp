@@ -112,7 +112,17 @@ TEST(HostEnvironment, CollisionSegmentsCrossingTheGroundAreNotified) {
     EXPECT_EQ(p.collisions[0].segment, 1);
     EXPECT_NEAR(p.collisions[0].distance_m, hat, 0.05);
   }
-  EXPECT_EQ(f.env.counters().rejected.at("segment-not-on-ownship"), 1u);
+  // Entity 3 is unknown to the IG: its segment is kept, not cast.
+  EXPECT_EQ(f.env.counters().rejected.at("segment-of-unknown-entity"), 2u);
+  // Once the IG has entity 3 (here where the ownship is), its segment is cast from it.
+  f.env.set_entity_lookup([&](std::uint16_t id, std::optional<std::uint8_t>) -> std::optional<ig::io::Pose> {
+    if (id == 3) return f.own;
+    return std::nullopt;
+  });
+  const CigiIgPackets with_entity = f.frame();
+  ASSERT_EQ(with_entity.collisions.size(), 2u);
+  EXPECT_EQ(with_entity.collisions[1].entity, 3);
+  EXPECT_NEAR(with_entity.collisions[1].distance_m, hat, 0.05);
   // A reset drops the host's segments.
   f.send(kCigiModeStandby);
   EXPECT_EQ(f.env.ig_mode(), kCigiModeStandby);

@@ -24,3 +24,13 @@ add_test(NAME cli.serve.cigi_environment
           ${CMAKE_BINARY_DIR}/test-out/cigi_environment 47240)
 set_tests_properties(cli.serve.cigi_environment PROPERTIES LABELS "cli;net" SKIP_RETURN_CODE 77
   PASS_REGULAR_EXPRESSION "PASS environment" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)
+
+# Entities placed by a host (Entity Control for ids beyond the ownship): a
+# clamped entity's Position Response altitude is the IG's own HOT under it,
+# an attached one follows its parent, a destroyed one is gone. Skips without
+# IG_DEM_DIR.
+add_test(NAME cli.serve.cigi_entities
+  COMMAND python3 ${CMAKE_SOURCE_DIR}/tests/tools/cigi_entity_host.py $<TARGET_FILE:ig> ${CMAKE_SOURCE_DIR}
+          ${CMAKE_BINARY_DIR}/test-out/cigi_entities 47280)
+set_tests_properties(cli.serve.cigi_entities PROPERTIES LABELS "cli;net" SKIP_RETURN_CODE 77
+  PASS_REGULAR_EXPRESSION "PASS entities" FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)

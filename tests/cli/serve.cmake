@@ -112,3 +112,12 @@ ig_cli_failure_test(cli.send.record_with_flood "--record: not with --flood.*exit
   "'$<TARGET_FILE:ig-send>' '${CMAKE_SOURCE_DIR}/scenarios/default.json' --record /dev/null --flood 10")
 ig_cli_failure_test(cli.send.record_with_to "excludes.*exit=2"
   "'$<TARGET_FILE:ig-send>' '${CMAKE_SOURCE_DIR}/scenarios/default.json' --record /dev/null --to 127.0.0.1:47999")
+
+# Two hosts on one CIGI port: the IG told --host the first one's socket
+# follows that host's path; every datagram of the second is counted
+# (foreign_datagrams) and moves nothing.
+add_test(NAME cli.serve.second_host_ignored COMMAND bash ${CMAKE_SOURCE_DIR}/tests/tools/two_hosts.sh
+  ${CMAKE_BINARY_DIR}/bin ${CMAKE_SOURCE_DIR} ${IG_SERVE_OUT}/two_hosts 47260)
+set_tests_properties(cli.serve.second_host_ignored PROPERTIES LABELS "cli;net"
+  PASS_REGULAR_EXPRESSION "second host sent [1-9][0-9]*, foreign_datagrams [1-9].*follows the sent path"
+  FAIL_REGULAR_EXPRESSION "FAIL" RESOURCE_LOCK loopback_ig)

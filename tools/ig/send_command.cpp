@@ -34,7 +34,7 @@ namespace ig::app {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: ig send SCENARIO.json --to ADDR:PORT [--protocol native|cigi|fgfdm] [--rate HZ]\n"
+    "usage: ig send SCENARIO.json --to ADDR:PORT [--protocol native|cigi|fgfdm] [--from ADDR:PORT] [--rate HZ]\n"
     "               [--duration S] [--geodetic] [--loss P] [--burst-loss P --burst-length N]\n"
     "               [--jitter-ms J] [--reorder P] [--duplicate P] [--corrupt P] [--seed N]\n"
     "               [--flood N] [--cigi-listen ADDR:PORT [--cigi-sync]] [--log FILE] [--quiet]\n"
@@ -55,7 +55,7 @@ struct Args {
   int burst_length = 10;
   unsigned seed = 1;
   std::optional<int> flood;
-  std::optional<std::string> cigi_listen, log, can, record;
+  std::optional<std::string> cigi_listen, log, can, record, from;
   bool can_fd = false, can_float_position = false;
   bool no_timestamp = false, cigi_sync = false;
   int pairs = 0, stall_every = 0;
@@ -72,6 +72,8 @@ Args parse_args(const std::vector<std::string>& a) {
   add_scenario_argument(app, args.scenario, "the scenario whose path is sent (docs/scenario.md)");
   auto* to = app.add_option("--to", args.to, "where to send the pose datagrams (unicast or multicast)")
                  ->option_text("ADDR:PORT");
+  app.add_option("--from", args.from, "send from this local ADDR:PORT (an IG told --host ADDR:PORT takes only it)")
+      ->option_text("ADDR:PORT");
   app.add_option("--protocol", protocol,
                  "native (IGPS), cigi (CIGI 3.3) or fgfdm (FlightGear FGNetFDM v24); cigi and fgfdm need a "
                  "terrain with a geographic georeference (default native)")
@@ -192,7 +194,7 @@ int run(const Args& args) {
   std::unique_ptr<io::net::UdpSender> sender;
   std::unique_ptr<io::RecordingWriter> recording;
   if (args.record) recording = std::make_unique<io::RecordingWriter>(*args.record);
-  else if (!args.can) sender = std::make_unique<io::net::UdpSender>(args.to);
+  else if (!args.can) sender = std::make_unique<io::net::UdpSender>(args.to, "127.0.0.1", args.from);
 #ifdef IG_WITH_CAN
   // A CAN interface that goes down or away mid-stream is reopened every
   // 0.1 s; the poses meanwhile are counted as refused.

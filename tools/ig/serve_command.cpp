@@ -9,6 +9,7 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "io/net/sender_filter.h"
 #include "io/scenario.h"
 #include "session/live/live_loop.h"
 
@@ -20,12 +21,26 @@ constexpr const char* kUsage =
     "                [--fgfdm ADDR:PORT] [--multicast GROUP] [--channel NAME] [--headless | --window]\n"
     "                [--out DIR] [--frames N | --seconds S] [--rate HZ] [--record FILE]\n"
     "                [--size WxH] [--method NAME] [--modbus ADDR:PORT] [--latency smooth|latest|sync] [--quiet]\n"
-    "                [--host-surface full|drawn]\n"
+    "                [--host-surface full|drawn] [--host ADDR[:PORT]]... [--modbus-writer ADDR]...\n"
     "                [--can IFNAME [--can-altitude 320|322|332] [--can-node N] [--can-max-age-ms MS]]\n"
     "The live IG (docs/live-ig.md): renders the ownship pose received from a host at its own rate\n"
     "and logs every frame like ig run. At least one pose source (--udp, --cigi, --fgfdm, --can).\n"
     "ADDR may be empty (':5500' = all interfaces). Stops after --frames / --seconds, on SIGINT or\n"
     "SIGTERM, or when the window closes. Exit status: 0 ok, 1 failed, 2 bad arguments.\n";
+
+// ADDR or (with_port) ADDR:PORT, as --host and --modbus-writer take them.
+CLI::Validator host_pattern(bool with_port) {
+  return CLI::Validator(
+      [with_port](std::string& text) -> std::string {
+        try {
+          if (io::net::parse_host_pattern(text).port && !with_port) return text + ": an address, without a port";
+          return "";
+        } catch (const std::exception& e) {
+          return e.what();
+        }
+      },
+      with_port ? "ADDR[:PORT]" : "ADDR");
+}
 
 struct Args {
   std::string config;
@@ -62,6 +77,12 @@ Args parse_args(const std::vector<std::string>& a) {
                  "every UDP source binds GROUP:PORT and joins the group on loopback, so several channel "
                  "processes share one stream")
       ->option_text("GROUP");
+  app.add_option("--host", args.live.hosts,
+                 "take pose datagrams only from this host (repeatable; ADDR: any port, ADDR:PORT: that socket); "
+                 "without it each source takes them from its first sender. Others are counted "
+                 "(foreign_datagrams) and dropped")
+      ->check(host_pattern(true))
+      ->option_text("ADDR[:PORT]");
   app.add_option("--channel", args.channel,
                  "render this channel of the config (its view offsets and field of view); default: the first")
       ->option_text("NAME");
@@ -77,6 +98,11 @@ Args parse_args(const std::vector<std::string>& a) {
       ->option_text("MODE");
   app.add_option("--modbus", args.live.modbus, "Modbus TCP status and control server on this port (docs/modbus.md)")
       ->option_text("ADDR:PORT");
+  app.add_option("--modbus-writer", args.live.modbus_writers,
+                 "take Modbus writes only from this address (repeatable; reads from anyone); others get "
+                 "exception 01. Default: writes from any address")
+      ->check(host_pattern(false))
+      ->option_text("ADDR");
   app.add_option("--host-surface", host_surface,
                  "what HAT/HOT answers are measured on: full (the full-resolution surface, default) or drawn "
                  "(the surface this frame drew: Level0 outside the two-level method's Level1)")
