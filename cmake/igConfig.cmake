@@ -7,6 +7,7 @@ find_dependency(nlohmann_json 3 CONFIG)
 find_dependency(GDAL CONFIG)
 find_dependency(glfw3 3.3 CONFIG)
 find_dependency(ZLIB)
+find_dependency(TinyGLTF CONFIG)  # ig::ig_models
 find_dependency(PkgConfig)
 # The same imported targets the build used (static libraries carry them).
 foreach(_ig_module IN ITEMS "EPOXY epoxy" "EGL egl" "ERFA erfa" "OIIO OpenImageIO")

@@ -16,6 +16,8 @@ packages=(
   proj-data
   # headless OpenGL (Mesa llvmpipe through EGL) and the windowed path under Xvfb
   libegl-mesa0 libgl1-mesa-dri xvfb xauth
+  # glTF 2.0 entity models (visual/models): TinyGLTF; the public glTF test corpus
+  libtinygltf-dev assimp-testmodels
   # frame-time plots
   gnuplot-nox
   # test helpers (gdal_fillnodata.py: GDAL's own void fill, the reference for ours)
