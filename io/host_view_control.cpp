@@ -7,13 +7,17 @@
 namespace ig::io {
 
 std::string apply_view_control(ChannelSpec& channel, const wire::CigiViewControl& v) {
-  if (v.entity != wire::kCigiOwnshipEntity) return "view-entity-not-ownship";
+  // The view rides on its entity (the renderer places it; an entity the IG
+  // does not have leaves the view on the ownship).
+  channel.entity = v.entity;
   // CIGI yaw / pitch / roll of the view relative to its entity = the config's offsets.
   if (v.yaw_deg) channel.heading_offset_deg = *v.yaw_deg;
   if (v.pitch_deg) channel.pitch_offset_deg = *v.pitch_deg;
   if (v.roll_deg) channel.roll_offset_deg = *v.roll_deg;
-  const bool moved = (v.x_m && *v.x_m != 0.0f) || (v.y_m && *v.y_m != 0.0f) || (v.z_m && *v.z_m != 0.0f);
-  return moved ? "view-position-offset-ignored" : "";
+  if (v.x_m) channel.eye_offset_m[0] = *v.x_m;
+  if (v.y_m) channel.eye_offset_m[1] = *v.y_m;
+  if (v.z_m) channel.eye_offset_m[2] = *v.z_m;
+  return "";
 }
 
 std::string apply_view_definition(ChannelSpec& channel, const wire::CigiViewDefinition& v) {
@@ -43,7 +47,7 @@ void HostViewControl::take(const wire::CigiViewPackets& packets, const ChannelLo
     }
     const std::string note = how(*spec, packet);
     if (!note.empty()) ++notes_[note];
-    if (note != "view-entity-not-ownship" && note != "orthographic-ignored") ++applied_;
+    if (note != "orthographic-ignored") ++applied_;
   };
   for (const auto& c : packets.controls)
     apply(c, [](ChannelSpec& s, const wire::CigiViewControl& v) { return apply_view_control(s, v); });

@@ -2,7 +2,9 @@
 // CIGI View Control / View Definition from the host applied to the IG's
 // channels: the same ChannelSpec fields a config file sets (view offsets,
 // vertical field of view), so a channel set up by the host renders as one set
-// up by the config. What a ChannelSpec cannot hold is counted, not guessed.
+// up by the config, plus the entity the view rides on and the eye's offset
+// from it (chase, tower, wingman views). What a ChannelSpec cannot hold is
+// counted, not guessed.
 // docs/host-services.md, "View control".
 
 #include <cstdint>
@@ -19,8 +21,7 @@
 namespace ig::io {
 
 // Applies one packet; returns "" when applied in full, else why not (in
-// part): "view-entity-not-ownship" (not applied), "view-position-offset-ignored",
-// "orthographic-ignored" (not applied), "asymmetric-frustum" (drawn symmetric
+// part): "orthographic-ignored" (not applied), "asymmetric-frustum" (drawn symmetric
 // with the same vertical extent), "frustum-part-ignored" (near, far, left,
 // right or mirror: the render settings and the image aspect keep those).
 std::string apply_view_control(ChannelSpec& channel, const wire::CigiViewControl& v);

@@ -310,7 +310,8 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
     if (!root.is_object()) {
       throw ScenarioError(std::string("top level must be a JSON object (got ") + root.type_name() + ")");
     }
-    check_keys(root, "", {"name", "terrain", "render", "environment", "channels", "path", "time", "capture", "live"});
+    check_keys(root, "",
+               {"name", "terrain", "render", "environment", "channels", "path", "entities", "time", "capture", "live"});
 
     Scenario s;
     s.name = root.contains("name") ? get_name(root["name"], "name") : default_name;
@@ -325,6 +326,7 @@ Scenario parse_impl(const std::string& text, const std::string& origin, const Co
     }
     if (!root.contains("path")) fail("path", "required key is missing");
     s.path = parse_path(root["path"]);
+    if (root.contains("entities")) s.entities = parse_entities(root["entities"]);
 
     s.duration_s = s.path.keys.back().t_s;
     if (root.contains("time")) {

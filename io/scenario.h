@@ -5,6 +5,7 @@
 // a bad value throws ScenarioError naming the key path (e.g. "path.keys[2].t").
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -92,6 +93,12 @@ struct ChannelSpec {
   double pitch_offset_deg = 0.0;
   double roll_offset_deg = 0.0;
   std::optional<double> fov_y_deg;  // overrides render.fov_y_deg
+  // Set by a host (CIGI View Control), not by config files: the entity the
+  // view rides on (0: the ownship) and the eye's offset from its reference
+  // point in its body axes (x forward, y right, z down, metres): chase,
+  // tower and wingman views.
+  std::uint16_t entity = 0;
+  std::array<double, 3> eye_offset_m{0.0, 0.0, 0.0};
 };
 
 enum class PositionFrame { Local, Geodetic };
@@ -112,6 +119,22 @@ struct PathSpec {
   std::vector<PathKey> keys;  // strictly increasing t_s, at least one
 };
 
+// A scripted entity (docs/scenario.md, "entities"): an entity type the model
+// table draws, moved along a path like the ownship's. Clamped: the path's
+// altitude is the height above the surface under it (water included), kept
+// at every frame; conformal also lays it on the surface's slope. With a
+// parent, the path gives offsets from that entity in its body axes (x right,
+// y forward, z up) and attitudes relative to it.
+enum class EntityClamp { None, Ground, Conformal };
+struct EntitySpec {
+  std::uint16_t id = 1;
+  std::uint16_t type = 0;
+  PathSpec path;
+  EntityClamp clamp = EntityClamp::None;
+  std::optional<std::uint16_t> parent;
+  double alpha = 1.0;
+};
+
 struct Scenario {
   std::string name;
   std::string source_path;  // file it was read from ("" when parsed from text)
@@ -119,6 +142,7 @@ struct Scenario {
   RenderSpec render;
   std::vector<ChannelSpec> channels;  // at least one
   PathSpec path;
+  std::vector<EntitySpec> entities;  // at most kMaxScenarioEntities, ids unique, parents listed
   double time_step_s = 1.0 / 60.0;
   double duration_s = 10.0;             // defaults to the last key's time when omitted
   std::vector<double> capture_times_s;  // captured as PNG (nearest frame)

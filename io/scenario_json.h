@@ -23,6 +23,7 @@ using json = nlohmann::json;
 inline constexpr double kMaxDistanceM = 1e9;      // far plane, fog, local positions
 inline constexpr double kMaxAngleDeg = 1e6;       // heading / roll values (wrapped)
 inline constexpr double kMaxTimeS = 1e7;          // key times and duration (~115 days)
+inline constexpr std::size_t kMaxScenarioEntities = 10000;  // as the live entity table's cap
 inline constexpr long long kMaxFrames = 100000000;  // duration / step + 1
 inline constexpr int kMaxImageSide = 16384;
 
@@ -81,7 +82,9 @@ options::WaterOptions parse_water(const json& j, const std::string& path,
                                   const std::function<std::string(const json&, const std::string&)>& file_path);
 
 // path (scenario_path.cpp).
-PathSpec parse_path(const json& j);
+PathSpec parse_path(const json& j, const std::string& path = "path");
+// "entities": scripted entities, each on a path like the ownship's (scenario_entities.cpp).
+std::vector<EntitySpec> parse_entities(const json& j);
 
 // render.twolevel and the baselines' sections of `render` into r
 // (scenario_methods.cpp).

@@ -6,8 +6,7 @@
 
 namespace ig::io::scenario_json {
 
-PathSpec parse_path(const json& j) {
-  const std::string path = "path";
+PathSpec parse_path(const json& j, const std::string& path) {
   require_object(j, path);
   check_keys(j, path, {"frame", "altitude", "keys"});
   PathSpec ps;

@@ -157,12 +157,20 @@ CigiResponse HostServices::cast_collision_segment(const LosSegmentRequest& segme
 }
 
 CigiResponse HostServices::respond(const CigiRequest& request, const io::Pose& ownship) {
+  // Entity-relative points are relative to the request's entity: the ownship,
+  // or one the entity lookup places (an unknown one: no reference pose).
+  const std::uint16_t entity = std::visit([](const auto& q) { return q.entity; }, request);
+  std::optional<io::Pose> other;
+  if (entity != kCigiOwnshipEntity && entity_lookup_) other = entity_lookup_(entity);
+  const io::Pose& reference = other ? *other : ownship;
+  const bool known = entity == kCigiOwnshipEntity || other.has_value();
+  ownship_ = ownship;
   return std::visit(
       [&](const auto& q) -> CigiResponse {
         using T = std::decay_t<decltype(q)>;
-        if constexpr (std::is_same_v<T, HatHotRequest>) return hat_hot(q, ownship);
-        else if constexpr (std::is_same_v<T, LosSegmentRequest>) return los_segment(q, ownship);
-        else return los_vector(q, ownship);
+        if constexpr (std::is_same_v<T, HatHotRequest>) return hat_hot(q, reference, known);
+        else if constexpr (std::is_same_v<T, LosSegmentRequest>) return los_segment(q, reference, known);
+        else return los_vector(q, reference, known);
       },
       request);
 }
@@ -256,21 +264,21 @@ std::optional<terrain::SurfacePoint> HostServices::surface_for_hot(double x_m, d
   return s;
 }
 
-std::optional<glm::dvec3> HostServices::place(const glm::dvec3& p, CigiCoords c, std::uint16_t entity,
-                                               const io::Pose& ownship) {
+std::optional<glm::dvec3> HostServices::place(const glm::dvec3& p, CigiCoords c, bool entity_known,
+                                               const io::Pose& entity) {
   if (c == CigiCoords::Geodetic) return to_local_ ? to_local_(p.x, p.y, p.z) : std::nullopt;
-  if (entity != kCigiOwnshipEntity) return std::nullopt;  // only the ownship's pose is known here
-  const BodyAxes b = body_axes(ownship);
-  return ownship.position + p.x * b.forward + p.y * b.right + p.z * b.down;
+  if (!entity_known) return std::nullopt;  // an entity this IG does not have
+  const BodyAxes b = body_axes(entity);
+  return entity.position + p.x * b.forward + p.y * b.right + p.z * b.down;
 }
 
-HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& ownship) {
+HatHotResponse HostServices::hat_hot(const HatHotRequest& r, const io::Pose& ownship, bool entity_known) {
   HatHotResponse out;
   out.id = r.id;
   out.extended = r.type == HatHotType::Extended;
   out.type = r.type;
   out.host_frame = host_frame_;
-  const auto p = place(r.point, r.coords, r.entity, ownship);
+  const auto p = place(r.point, r.coords, entity_known, ownship);
   const auto s = p ? surface_for_hot(p->x, p->y) : std::nullopt;
   if (!s) return out;  // outside the terrain (or an unknown entity): valid clear
   out.valid = true;
@@ -304,20 +312,27 @@ void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHi
   }
 }
 
-LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& ownship) {
+LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& ownship, bool entity_known) {
   LosResponse out = los_response_for(r, host_frame_);
-  const auto from = place(r.source, r.source_coords, r.entity, ownship);
-  const auto to = place(r.destination, r.destination_coords,
-                        r.destination_entity_valid ? r.destination_entity : r.entity, ownship);
+  const auto from = place(r.source, r.source_coords, entity_known, ownship);
+  // The destination may be relative to another entity (the ownship or one the lookup places).
+  std::optional<io::Pose> other;
+  if (r.destination_entity_valid && r.destination_entity != r.entity)
+    other = r.destination_entity == kCigiOwnshipEntity ? std::optional(ownship_)
+            : entity_lookup_                            ? entity_lookup_(r.destination_entity)
+                                                        : std::nullopt;
+  const bool other_entity = r.destination_entity_valid && r.destination_entity != r.entity;
+  const auto to = place(r.destination, r.destination_coords, other_entity ? other.has_value() : entity_known,
+                        other ? *other : ownship);
   if (!from || !to || !query_.inside(from->x, from->y)) return out;
   out.valid = true;
   fill_hit(out, query_.segment(*from, *to), r.response_coords, ownship);
   return out;
 }
 
-LosResponse HostServices::los_vector(const LosVectorRequest& r, const io::Pose& ownship) {
+LosResponse HostServices::los_vector(const LosVectorRequest& r, const io::Pose& ownship, bool entity_known) {
   LosResponse out = los_response_for(r, host_frame_);
-  const auto from = place(r.source, r.source_coords, r.entity, ownship);
+  const auto from = place(r.source, r.source_coords, entity_known, ownship);
   if (!from || !query_.inside(from->x, from->y)) return out;
   const double az = r.azimuth_deg / kDeg, el = r.elevation_deg / kDeg;
   glm::dvec3 dir;

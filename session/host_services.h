@@ -58,6 +58,12 @@ class HostServices {
   using DrawnHeight = std::function<std::optional<double>(double x_m, double y_m)>;
   void set_drawn_height(DrawnHeight f) { drawn_height_ = std::move(f); }
 
+  // Where entity `id` (not 0) is now, for requests relative to it; nullopt:
+  // no such entity (the answer's valid flag is clear). Unset: only the
+  // ownship is known.
+  using EntityLookup = std::function<std::optional<io::Pose>(std::uint16_t id)>;
+  void set_entity_lookup(EntityLookup f) { entity_lookup_ = std::move(f); }
+
   // Every datagram from the CIGI host: its requests are queued.
   void take(const io::wire::CigiRequests& requests);
   void take(std::span<const std::uint8_t> datagram);  // decodes, then the above
@@ -115,11 +121,14 @@ class HostServices {
     std::uint64_t next_frame;
   };
   void drop(const std::string& reason) { ++counters_.dropped[reason]; }
-  std::optional<glm::dvec3> place(const glm::dvec3& p, io::wire::CigiCoords c, std::uint16_t entity,
-                                  const io::Pose& ownship);
-  io::wire::HatHotResponse hat_hot(const io::wire::HatHotRequest& r, const io::Pose& ownship);
-  io::wire::LosResponse los_segment(const io::wire::LosSegmentRequest& r, const io::Pose& ownship);
-  io::wire::LosResponse los_vector(const io::wire::LosVectorRequest& r, const io::Pose& ownship);
+  std::optional<glm::dvec3> place(const glm::dvec3& p, io::wire::CigiCoords c, bool entity_known,
+                                  const io::Pose& entity);
+  // `reference`: the pose entity-relative points are relative to (the
+  // request's entity); `entity_known`: the IG has that entity.
+  io::wire::HatHotResponse hat_hot(const io::wire::HatHotRequest& r, const io::Pose& reference, bool entity_known);
+  io::wire::LosResponse los_segment(const io::wire::LosSegmentRequest& r, const io::Pose& reference,
+                                    bool entity_known);
+  io::wire::LosResponse los_vector(const io::wire::LosVectorRequest& r, const io::Pose& reference, bool entity_known);
   void fill_hit(io::wire::LosResponse& out, const std::optional<terrain::LosHit>& hit, io::wire::CigiCoords coords,
                 const io::Pose& ownship);
   static int kind(const io::wire::CigiRequest& r) { return int(r.index()); }
@@ -131,6 +140,8 @@ class HostServices {
   io::GeodeticToLocal to_local_;
   LocalToGeodetic to_geodetic_;
   DrawnHeight drawn_height_;
+  EntityLookup entity_lookup_;
+  io::Pose ownship_;  // the frame's, while a request is answered
   HostServicesOptions options_;
   std::deque<Pending> queue_;
   std::map<std::pair<int, std::uint16_t>, Periodic> periodic_;  // (request kind, id)

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/shader_program.h"
 #include "lod/level0_budget.h"
+#include "models/model_table.h"
 #include "lod/look_at_point.h"
 #include "render/twolevel_method.h"
 #include "session/scene_setup.h"
@@ -37,6 +39,7 @@ ScenarioRunner::ScenarioRunner(io::Scenario scenario, const RunOptions& options)
   heightfield_ = load_terrain(scenario_.terrain);
   load_ms_ = ms_since(t0);
   path_ = std::make_unique<io::PathInterpolator>(place_path(scenario_.path, heightfield_));
+  if (!scenario_.entities.empty()) scripted_ = std::make_unique<ScenarioEntities>(scenario_.entities, heightfield_);
   geolocation_ = environment::TerrainGeolocation::make(heightfield_);
   if (r.shading.time_utc && !r.shading.sun_direction) {
     if (!geolocation_)
@@ -98,9 +101,15 @@ io::Pose ScenarioRunner::pose_at(double t_s) const { return path_->sample(t_s); 
 render::Camera ScenarioRunner::camera_for(const io::Pose& pose, const ChannelView& ch) const {
   const auto& r = scenario_.render;
   render::Camera c;
-  c.position = pose.position;
+  // The view's entity (the ownship unless a host put it on another one).
+  io::Pose base = pose;
+  if (ch.spec.entity != 0 && entity_lookup_)
+    if (const auto e = entity_lookup_(ch.spec.entity)) base = *e;
+  const auto& o = ch.spec.eye_offset_m;  // x forward, y right, z down
+  c.position = base.position + io::forward_of(base.attitude) * o[0] + io::right_of(base.attitude) * o[1] -
+               io::up_of(base.attitude) * o[2];
   c.attitude = io::apply_view_offset(
-      pose.attitude, io::Hpr{ch.spec.heading_offset_deg, ch.spec.pitch_offset_deg, ch.spec.roll_offset_deg});
+      base.attitude, io::Hpr{ch.spec.heading_offset_deg, ch.spec.pitch_offset_deg, ch.spec.roll_offset_deg});
   c.fov_y_deg = ch.spec.fov_y_deg.value_or(r.fov_y_deg);
   c.aspect = double(r.width) / double(r.height);
   c.near_m = r.near_m;
@@ -111,6 +120,23 @@ render::Camera ScenarioRunner::camera_for(const io::Pose& pose, const ChannelVie
 // The members' GL objects are deleted after this body, in this runner's context.
 ScenarioRunner::~ScenarioRunner() {
   if (context_) context_->make_current();
+}
+
+void ScenarioRunner::set_entities(std::vector<render::EntityInstance> entities) { host_entities_ = std::move(entities); }
+
+void ScenarioRunner::draw_entities(std::vector<render::EntityInstance> entities) {
+  if (!entities_) {
+    if (entities.empty()) return;
+    context_->make_current();
+    // The default model table (bin/models or PREFIX/share/ig/models); without
+    // it every type is a box, and each is said once.
+    std::optional<models::ModelTable> table;
+    const std::string dir = gl::installed_data_dir("models", "default_models.json");
+    if (!dir.empty()) table = models::load_model_table(dir + "/default_models.json");
+    entities_ = std::make_unique<render::EntityRenderer>(options_.shader_dir, std::move(table));
+    for (auto& ch : channels_) ch.renderer->set_entities(entities_.get());
+  }
+  entities_->set_instances(std::move(entities));
 }
 
 FrameResult ScenarioRunner::render_frame(int k) {
@@ -135,6 +161,11 @@ FrameResult ScenarioRunner::render_pose(int k, double sim_time_s, const io::Pose
   update_sun(sim_time_s, pose.position);
   scene_->set_time(sim_time_s);  // the waves drift with the scene's clock
   f.visibility_m = scene_->shading().fog_visibility_m;
+  // This frame's entities: the scenario's at this time, then the host's.
+  std::vector<render::EntityInstance> entities;
+  if (scripted_) entities = scripted_->at(sim_time_s, pose);
+  entities.insert(entities.end(), host_entities_.begin(), host_entities_.end());
+  draw_entities(std::move(entities));
   for (auto& ch : channels_) {
     const auto t0 = Clock::now();
     ch.camera = camera_for(f.pose, ch);

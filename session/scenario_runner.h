@@ -4,6 +4,7 @@
 // ig run drives it to the end and writes the outputs; tests drive it frame by
 // frame and look at the pixels.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 #include "io/path_interpolator.h"
 #include "io/scenario.h"
 #include "render/frame_renderer.h"
+#include "session/scenario_entities.h"
 #include "render/terrain_method.h"
 #include "render/terrain_scene.h"
 #include "stats/frame_log.h"
@@ -137,6 +139,16 @@ class ScenarioRunner {
   void rebuild_method(const options::TwoLevelOptions& twolevel);
   // Windowed: the user closed the window (polls events). Headless: false.
   bool window_closed() { return context_->should_close(); }
+  // The host's entities the next frames draw besides the scenario's (the
+  // poses' world frame), until set again. The entity renderer and its models
+  // are made with the first frame that has an entity: a run without entities
+  // has none.
+  void set_entities(std::vector<render::EntityInstance> entities);
+  render::EntityRenderer* entity_renderer() { return entities_.get(); }
+  // Where entity `id` is this frame, for views riding on it (CIGI View
+  // Control's entity); unset or nullopt: the view stays on the ownship.
+  using EntityPoseLookup = std::function<std::optional<io::Pose>(std::uint16_t id)>;
+  void set_entity_lookup(EntityPoseLookup f) { entity_lookup_ = std::move(f); }
   // The camera render_frame / render_pose use for a pose on a channel
   // (ig bench renders other methods with exactly these cameras).
   render::Camera camera_for(const io::Pose& pose, const ChannelView& channel) const;
@@ -151,6 +163,11 @@ class ScenarioRunner {
   std::unique_ptr<gl::GlContext> context_;
   std::unique_ptr<render::TerrainScene> scene_;
   std::vector<ChannelView> channels_;
+  std::unique_ptr<render::EntityRenderer> entities_;  // GL objects: before context_ in destruction
+  std::unique_ptr<ScenarioEntities> scripted_;         // the scenario's entities (none: null)
+  std::vector<render::EntityInstance> host_entities_;  // set_entities
+  EntityPoseLookup entity_lookup_;
+  void draw_entities(std::vector<render::EntityInstance> entities);
   int frame_count_ = 0;
   // Where the eye is on the Earth (null without a georeference).
   std::unique_ptr<environment::TerrainGeolocation> geolocation_;

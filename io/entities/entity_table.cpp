@@ -18,9 +18,9 @@ glm::dvec3 offset_from(const Pose& p, const glm::dvec3& xyz) {
   return p.position + forward_of(p.attitude) * xyz.x + right_of(p.attitude) * xyz.y - up_of(p.attitude) * xyz.z;
 }
 
-// The attitude whose up is the surface normal and whose forward is the
-// heading laid on the surface (a conformal clamp).
-glm::dquat conformal(double heading_deg, const glm::dvec3& normal) {
+}  // namespace
+
+glm::dquat conformal_attitude(double heading_deg, const glm::dvec3& normal) {
   const double h = glm::radians(heading_deg);
   const glm::dvec3 up = glm::normalize(normal);
   const glm::dvec3 level(std::sin(h), std::cos(h), 0.0);
@@ -30,8 +30,6 @@ glm::dquat conformal(double heading_deg, const glm::dvec3& normal) {
   const glm::dvec3 forward = glm::cross(up, right);
   return glm::quat_cast(glm::dmat3(right, forward, up));  // body x right, y forward, z up
 }
-
-}  // namespace
 
 EntityTable::EntityTable(GeodeticToLocal to_local, SurfaceAt surface, EntityLimits limits)
     : to_local_(std::move(to_local)), surface_(std::move(surface)), limits_(limits) {}
@@ -87,6 +85,8 @@ void EntityTable::take_control(const wire::CigiEntityControl& c, double time_s) 
 
 void EntityTable::take(const wire::CigiEntityPackets& packets, std::span<const wire::CigiRateControl> rates,
                        double time_s) {
+  // Malformed Entity and Articulated Part Controls: dropped by the decoder, counted here.
+  for (const wire::QueryReject r : packets.rejects) ++counters_[std::string("rejected-") + wire::query_reject_name(r)];
   for (const auto& c : packets.controls)
     if (c.entity != wire::kCigiOwnshipEntity) take_control(c, time_s);
   for (const auto& r : rates) {
@@ -195,7 +195,7 @@ std::optional<EntityPose> EntityTable::resolve(std::uint16_t id, double time_s, 
       if (s) {
         out.pose.position.z = s->height_m + c.position.z;
         if (c.clamp == CigiClamp::Conformal)
-          out.pose.attitude = conformal(hpr_from_attitude(local.attitude).heading_deg, s->normal);
+          out.pose.attitude = conformal_attitude(hpr_from_attitude(local.attitude).heading_deg, s->normal);
       } else {
         note("entity " + std::to_string(id) + ": clamped off the terrain; placed at its offset");
       }

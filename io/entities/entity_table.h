@@ -34,6 +34,10 @@ struct SurfaceSample {
 };
 using SurfaceAt = std::function<std::optional<SurfaceSample>(double x_m, double y_m)>;
 
+// The attitude whose up is the surface normal and whose forward is the
+// heading laid on the surface: a conformal clamp.
+glm::dquat conformal_attitude(double heading_deg, const glm::dvec3& normal);
+
 struct EntityLimits {
   std::size_t max_entities = 10000;  // more ids are refused (counted "too-many-entities")
   std::size_t max_parts = 64;        // articulated parts per entity

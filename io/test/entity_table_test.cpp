@@ -175,6 +175,11 @@ TEST(EntityTable, ArticulatedPartsMoveFromTheEntity) {
   EXPECT_NEAR(hpr_from_attitude(part->attitude).heading_deg, 45.0, 1e-9);
   ASSERT_EQ(t.at(30)->parts->count(1), 1u);
   EXPECT_EQ(t.table.summary()["parts-for-unknown-entity"], 1);
+  wire::CigiEntityPackets bad;
+  bad.rejects = {wire::QueryReject::NonFinite, wire::QueryReject::NonFinite, wire::QueryReject::WrongSize};
+  t.table.take(bad, {}, 0.0);
+  EXPECT_EQ(t.table.summary()["rejected-non-finite"], 2);
+  EXPECT_EQ(t.table.summary()["rejected-wrong-size"], 1);
 }
 
 TEST(EntityTable, TheCapRefusesMoreEntitiesOnce) {

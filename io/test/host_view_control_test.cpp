@@ -66,11 +66,12 @@ TEST(HostViewControl, OnlyEnabledFieldsChangeAndTheRestIsCounted) {
   auto lookup = [&](std::uint16_t v) { return v == 0 ? &ch : nullptr; };
   CigiViewControl c;
   c.pitch_deg = -3.0f;  // heading and roll not enabled: kept
-  c.x_m = 1.5f;         // eye offset: not supported
+  c.x_m = 1.5f;         // eye offset: only x given, y and z kept
   views.take(datagram(false, encode_cigi_view_control(c, false)), lookup);
   EXPECT_EQ(ch.heading_offset_deg, 10);
   EXPECT_EQ(ch.pitch_offset_deg, -3);
-  EXPECT_EQ(views.notes().at("view-position-offset-ignored"), 1u);
+  EXPECT_EQ(ch.eye_offset_m, (std::array<double, 3>{1.5, 0.0, 0.0}));
+  EXPECT_EQ(views.notes().count("view-position-offset-ignored"), 0u);
   CigiViewDefinition asym;
   asym.top_deg = 30.0f;
   asym.bottom_deg = -10.0f;
@@ -80,7 +81,7 @@ TEST(HostViewControl, OnlyEnabledFieldsChangeAndTheRestIsCounted) {
   CigiViewControl other = c;
   other.view = 3;  // no such channel
   CigiViewControl entity = c;
-  entity.entity = 9;  // not the ownship
+  entity.entity = 9;  // not the ownship: the view rides on entity 9
   entity.pitch_deg = 50.0f;
   CigiViewDefinition bad;
   bad.top_deg = -5.0f;
@@ -88,10 +89,11 @@ TEST(HostViewControl, OnlyEnabledFieldsChangeAndTheRestIsCounted) {
   views.take(datagram(false, encode_cigi_view_control(other, false), encode_cigi_view_control(entity, false),
                       encode_cigi_view_definition(bad, false)),
              lookup);
-  EXPECT_EQ(ch.pitch_offset_deg, -3);
+  EXPECT_EQ(ch.pitch_offset_deg, 50);
   EXPECT_EQ(*ch.fov_y_deg, 40.0);
   EXPECT_EQ(views.notes().at("view-unknown-channel"), 1u);
-  EXPECT_EQ(views.notes().at("view-entity-not-ownship"), 1u);
+  EXPECT_EQ(views.notes().count("view-entity-not-ownship"), 0u);  // views ride on any entity now
+  EXPECT_EQ(ch.entity, 9);
   EXPECT_EQ(views.notes().at("view-out-of-range"), 1u);
   // A packet with the wrong size is dropped and counted.
   auto wrong = encode_cigi_view_control(c, false);

@@ -132,6 +132,12 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
           if (!s) return std::nullopt;
           return io::SurfaceSample{s->height_m, s->normal};
         });
+    auto entity_pose = [&](std::uint16_t id) -> std::optional<io::Pose> {
+      const auto e = entities->pose_of(id, entity_time_s, frame_pose);
+      return e ? std::optional(e->pose) : std::nullopt;
+    };
+    services->set_entity_lookup(entity_pose);
+    runner.set_entity_lookup(entity_pose);  // views riding on entities
     environment->set_entity_lookup([&](std::uint16_t id, std::optional<std::uint8_t> part) -> std::optional<io::Pose> {
       if (part) return entities->part_pose_of(id, *part, entity_time_s, frame_pose);
       const auto e = entities->pose_of(id, entity_time_s, frame_pose);
@@ -268,8 +274,15 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
     if (entities) {
       entity_time_s = frame_start;
       frame_pose = pose;
-      entities_placed_max = std::max(entities_placed_max, entities->poses_at(entity_time_s, pose).size());
+      const auto placed = entities->poses_at(entity_time_s, pose);
+      entities_placed_max = std::max(entities_placed_max, placed.size());
+      std::vector<render::EntityInstance> drawn;
+      drawn.reserve(placed.size());
+      for (const auto& e : placed) drawn.push_back({e.id, e.type, e.pose.position, e.pose.attitude, e.alpha});
+      runner.set_entities(std::move(drawn));
       for (const auto& m : entities->take_messages()) environment->message(m);
+      if (auto* r = runner.entity_renderer())
+        for (const auto& m : r->take_messages()) environment->message(m);
     }
     const FrameResult f = runner.render_pose(k, frame_start - start, pose, pose_ms);
     const double complete = io::net::steady_now_s();  // the renderer ends with glFinish

@@ -62,3 +62,14 @@ assert set(summary['pass_ms_median']) == set(timed), (summary['pass_ms_median'],
 print('pass times ok')
 PY")
 set_tests_properties(cli.run.pass_times PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "pass times ok")
+
+# Scripted entities (docs/entities.md): 16 entities on the default flight;
+# every frame has the entity pass, and two runs are pixel-identical.
+add_test(NAME cli.run.scripted_entities
+  COMMAND bash -c "set -e; out='${IG_TEST_OUT}/run_entities'; rm -rf \"$out\"; mkdir -p \"$out\"
+    python3 '${CMAKE_SOURCE_DIR}/tools/bench/entity_traffic.py' '${CMAKE_SOURCE_DIR}/scenarios/default.json' 16 \"$out/traffic.json\"
+    for k in 1 2; do '$<TARGET_FILE:ig>' run \"$out/traffic.json\" --frames 20 --size 320x240 --out \"$out/run$k\" --quiet; done
+    cmp \"$out/run1/final.png\" \"$out/run2/final.png\"
+    python3 -c \"import csv,sys; r=list(csv.DictReader(open(sys.argv[1]))); d=[int(x['entities_draws']) for x in r]; print('frames', len(r), 'entity draws per frame', min(d), '..', max(d)); sys.exit(0 if min(d) > 0 else 1)\" \"$out/run1/frames.csv\"
+    echo scripted entities ok")
+set_tests_properties(cli.run.scripted_entities PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "scripted entities ok")

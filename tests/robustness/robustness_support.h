@@ -158,6 +158,7 @@ class Rig {
   }
   ig::render::TerrainScene& scene() { return *scene_; }
   ig::render::TerrainMethod& method() { return *method_; }
+  ig::render::FrameRenderer& renderer() { return *renderer_; }
   const ig::terrain::Heightfield& heightfield() const { return *hf_; }
   const ig::gl::RenderTarget& target() const { return *target_; }
 

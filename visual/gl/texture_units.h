@@ -22,6 +22,7 @@ enum class TextureUnit : int {
   kWaves = 13,          // the water's wave slopes (scenes with water)
   kWaterMarks = 14,     // deferred shading's marks of where water may be (the water pass's mask)
   kWaterPresence = 15,  // where water may be, coarsely (scenes with water)
+  kEntityBaseColor = 16,  // an entity model's base colour texture (scenes with entities)
 };
 
 constexpr int unit(TextureUnit u) { return static_cast<int>(u); }

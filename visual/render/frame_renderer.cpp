@@ -11,10 +11,11 @@ using stats::ms_since;
 // The work counters' passes: the method's, deferred shading's, its water
 // pass (scenes with water only), the sky and the anti-aliasing post pass (0
 // where the frame has none).
-std::vector<std::string> pass_names_of(const TerrainMethod& method, const TerrainScene& scene) {
+std::vector<std::string> pass_names_of(const TerrainMethod& method, const TerrainScene& scene, bool entities) {
   auto names = method.pass_names();
   names.push_back("shade");
   if (scene.has_water()) names.push_back("water");
+  if (entities) names.push_back("entities");
   names.push_back("sky");
   names.push_back("aa");
   return names;
@@ -27,7 +28,7 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
       shader_dir_(shader_dir),
       sky_(shader_dir),
       post_filter_(shader_dir),
-      recorder_(pass_names_of(method, scene)) {
+      recorder_(pass_names_of(method, scene, false)) {
   method_->set_pass_recorder(&recorder_);
   take_shading_settings();
 }
@@ -63,14 +64,21 @@ FrameRenderer::~FrameRenderer() { method_->set_pass_recorder(nullptr); }
 void FrameRenderer::set_method(TerrainMethod& method) {
   method_->set_pass_recorder(nullptr);
   method_ = &method;
-  if (auto names = pass_names_of(method, scene_); names != recorder_.pass_names())
+  if (auto names = pass_names_of(method, scene_, entities_ != nullptr); names != recorder_.pass_names())
     recorder_.reset_passes(std::move(names));
   method_->set_pass_recorder(&recorder_);
   take_shading_settings();
 }
 
+void FrameRenderer::set_entities(EntityRenderer* entities) {
+  entities_ = entities;
+  if (auto names = pass_names_of(*method_, scene_, entities_ != nullptr); names != recorder_.pass_names())
+    recorder_.reset_passes(std::move(names));
+}
+
 ViewSelection FrameRenderer::select(const Camera& world_camera, const gl::RenderTarget& target) {
   ViewSelection s;
+  s.world_eye = world_camera.position;
   // Methods work in terrain-local metres (world origin subtracted in double)
   // and see the scene's Earth curvature through the camera.
   s.camera = scene_.local_camera(world_camera);
@@ -108,6 +116,8 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
       water_->run(target, water_mask_program_, water_shade_program_, recorder_);
     }
   }
+  // Entities over the terrain as drawn (depth-tested against it), lit as it.
+  if (entities_) r.entities = entities_->draw(camera, selection.world_eye, scene_, target, recorder_);
   gl::finish();
   r.timings.terrain_ms = ms_since(t0);
 
@@ -137,6 +147,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   r.total.bytes_uploaded = gl::work_tally().bytes_uploaded - at_start.bytes_uploaded;
   if (!r.method.passes.empty()) r.method.passes += "+";
   if (deferred_ && drew_terrain) r.method.passes += water_ ? "shade+water+" : "shade+";
+  if (r.entities.in_view > 0) r.method.passes += "entities+";
   r.method.passes += "sky";
   if (target.post_pass()) r.method.passes += "+aa";
   return r;

@@ -20,6 +20,7 @@
 #include "gl/water_pass.h"
 #include "gl/work_counters.h"
 #include "render/camera.h"
+#include "render/entity_renderer.h"
 #include "render/terrain_method.h"
 #include "render/terrain_scene.h"
 
@@ -34,6 +35,7 @@ struct ViewTimings {
 
 struct ViewResult {
   MethodFrameStats method;
+  EntityDrawStats entities;
   ViewTimings timings;
   // Work of this frame: per pass (the method's passes, then "sky") and in all.
   std::vector<gl::PassWork> passes;
@@ -45,6 +47,7 @@ struct ViewResult {
 // the scene step is timed with the selection.
 struct ViewSelection {
   Camera camera;  // terrain-local
+  glm::dvec3 world_eye{0.0};  // the camera's world position (entities are placed in that frame)
   lod::SceneRequests scene_requests;
   std::chrono::steady_clock::time_point lod_start;
   gl::WorkTally work_at_start;  // the scene step's uploads count in the frame's work
@@ -75,6 +78,9 @@ class FrameRenderer {
   // boundary): the sky program and the rest are kept, not recompiled; the
   // shading settings are taken again, as the constructor takes them.
   void set_method(TerrainMethod& method);
+  // Entities drawn after the terrain, before the sky (nullptr: none; the
+  // frame then has no entity pass). Not owned.
+  void set_entities(EntityRenderer* entities);
   // For tests: the post filter on every pixel in one draw instead of on the
   // pixels its first draw marks (gl::PostFilterPass).
   void set_post_filter_mask(bool on) { post_filter_.set_edge_mask(on); }
@@ -96,6 +102,7 @@ class FrameRenderer {
   void take_shading_settings();
   gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;
+  EntityRenderer* entities_ = nullptr;
   bool wireframe_ = false;
   bool back_face_culling_ = true;
 };

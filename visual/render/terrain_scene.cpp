@@ -250,12 +250,15 @@ void TerrainScene::bind_common(const gl::ShaderProgram& p, const Camera& camera,
   }
   if (has_water() && (p.location("u_water_share") >= 0 || p.location("u_water_presence") >= 0)) bind_water(p, camera);
   p.set("u_fog_color", sky_light_.sky_horizon);
-  // Fog reaches 98 % at the visibility distance: exp(-(k V)^2) = 0.02.
-  const double k = shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;
-  p.set("u_fog_k", float(k));
+  p.set("u_fog_k", float(fog_k()));
   p.set("u_view_proj", camera.view_projection());
   p.set("u_earth_radius_m", float(camera.earth_radius_m));
   p.set("u_alpha", gl::coverage::kLevel1);
+}
+
+double TerrainScene::fog_k() const {
+  // Fog reaches 98 % at the visibility distance: exp(-(k V)^2) = 0.02.
+  return shading_.fog_visibility_m > 0 ? std::sqrt(std::log(50.0)) / shading_.fog_visibility_m : 0.0;
 }
 
 void TerrainScene::bind_water(const gl::ShaderProgram& p, const Camera& camera) const {

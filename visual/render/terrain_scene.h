@@ -78,6 +78,8 @@ class TerrainScene {
   const ShadingParams& shading() const { return shading_; }
   // Fog visibility in metres (0 = no fog); used from the next bind_common.
   void set_fog_visibility(double metres) { shading_.fog_visibility_m = metres; }
+  // The fog's k (fog.frag: 1 - exp(-(k d)^2)) at the visibility now; 0: no fog.
+  double fog_k() const;
   // The fragment stages of a terrain program: the shared shading
   // (terrain_shading.frag), the surface colour with or without ground detail
   // (ground_detail.frag / ground_plain.frag), the heights through a window
