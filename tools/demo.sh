@@ -7,5 +7,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)" --target ig ig-send
+cmake --build build -j"$(nproc)" --target ig ig-send ig_entity_models
 build/bin/ig run scenarios/default.json --out out/default "$@"

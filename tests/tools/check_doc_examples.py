@@ -15,6 +15,8 @@
   capture fragment).
 * An example that uses $IG_DEM_DIR (or ${IG_DEM_DIR}) is skipped, with a
   line saying so, when the variable is not set.
+* A model table (docs/models.md: "entities" whose items have "lods") names
+  only files the build writes beside the binary (bin/models), finest first.
 Prints one line per example and "doc examples ok: ..." or FAIL lines (exit 1).
 """
 import glob
@@ -26,7 +28,8 @@ import subprocess
 import sys
 
 ig, src, out = (os.path.abspath(a) for a in sys.argv[1:4])
-TOP_LEVEL = {"name", "terrain", "render", "environment", "channels", "path", "time", "capture", "live"}
+TOP_LEVEL = {"name", "terrain", "render", "environment", "channels", "path", "entities", "time", "capture", "live"}
+MODELS = os.path.join(os.path.dirname(ig), "models")  # the model table's folder beside the binary
 BASE = {
     "terrain": {"generator": {"size": 257, "origin": [36.66, -118.13]}},
     "path": {"keys": [{"t": 0, "position": [1000, 1000, 2500]}]},
@@ -76,6 +79,17 @@ for doc in sorted(glob.glob(os.path.join(src, "docs", "*.md"))):
                 continue
         if not isinstance(value, dict):
             fails.append(f"{label}: a {type(value).__name__}, not a scenario or scenario members")
+            continue
+        if not fragment and isinstance(value.get("entities"), list) and all("lods" in e for e in value["entities"]):
+            # A model table (docs/models.md): every file it names is one the build makes, levels finest first.
+            missing = [lod["file"] for e in value["entities"] for lod in e["lods"]
+                       if not os.path.exists(os.path.join(MODELS, lod["file"]))]
+            sizes = [[lod["min_size_px"] for lod in e["lods"]] for e in value["entities"]]
+            if missing or any(a <= b for s in sizes for a, b in zip(s, s[1:])):
+                fails.append(f"{label}: model table: files not in {MODELS}: {missing}; levels {sizes}")
+            else:
+                print(f"{label} (model table): every file in {MODELS}")
+                ran += 1
             continue
         unknown = set(value) - TOP_LEVEL
         if unknown:
