@@ -58,7 +58,7 @@ std::vector<render::EntityInstance> ScenarioEntities::at(double t_s, const io::P
   out.reserve(entities_.size());
   for (const Entity& e : entities_) {
     const io::Pose p = place(e, t_s, ownship, 0);
-    out.push_back({e.spec.id, e.spec.type, p.position, p.attitude, float(e.spec.alpha)});
+    out.push_back({e.spec.id, e.spec.type, p.position, p.attitude, float(e.spec.alpha), {}});
   }
   return out;
 }

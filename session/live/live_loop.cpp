@@ -278,7 +278,13 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
       entities_placed_max = std::max(entities_placed_max, placed.size());
       std::vector<render::EntityInstance> drawn;
       drawn.reserve(placed.size());
-      for (const auto& e : placed) drawn.push_back({e.id, e.type, e.pose.position, e.pose.attitude, e.alpha});
+      for (const auto& e : placed) {
+        render::EntityInstance d{e.id, e.type, e.pose.position, e.pose.attitude, e.alpha, {}};
+        for (const auto& [id, p] : *e.parts)
+          d.parts.push_back({id, p.enabled, {p.x_m.value_or(0), p.y_m.value_or(0), p.z_m.value_or(0)},
+                             {p.roll_deg.value_or(0), p.pitch_deg.value_or(0), p.yaw_deg.value_or(0)}});
+        drawn.push_back(std::move(d));
+      }
       runner.set_entities(std::move(drawn));
       for (const auto& m : entities->take_messages()) environment->message(m);
       if (auto* r = runner.entity_renderer())

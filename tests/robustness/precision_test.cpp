@@ -178,8 +178,8 @@ TEST(Precision, EntitiesAreTheSameFarFromTheOrigin) {
     Camera cam = base_camera(hf);
     cam.position += t;
     const glm::dvec3 f = cam.forward();
-    entities.set_instances({{1, 1, cam.position + 60.0 * f, ig::io::attitude_from_hpr({40.0, 0.0, 0.0}), 1.0f},
-                            {2, 3, cam.position + 400.0 * f - glm::dvec3(0, 0, 20), cam.attitude, 1.0f}});
+    entities.set_instances({{1, 1, cam.position + 60.0 * f, ig::io::attitude_from_hpr({40.0, 0.0, 0.0}), 1.0f, {}},
+                            {2, 3, cam.position + 400.0 * f - glm::dvec3(0, 0, 20), cam.attitude, 1.0f, {}}});
     const Frame fr = rig.render(cam, kFrames);
     EXPECT_EQ(fr.result.entities.in_view, 2u);
     if (offset == 0.0) {

@@ -23,12 +23,11 @@ import math
 import os
 import socket
 import struct
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cigi_environment_host import LAT, LON, ALT, entity_control, fail, failures, ig_control, parse_ig, \
-    position_request  # noqa: E402
+from cigi_environment_host import entity_control, fail, failures, ig_control, parse_ig, position_request, \
+    start_sync_ig, LAT, LON  # noqa: E402
 
 E2_LAT, E2_LON, E2_YAW = LAT + 0.009, LON + 0.011, 40.0
 
@@ -56,16 +55,7 @@ def main():
     if not os.environ.get("IG_DEM_DIR"):
         print("IG_DEM_DIR not set: CIGI entity test skipped")
         return 77
-    os.makedirs(out, exist_ok=True)
-    reply = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-    reply.bind(("127.0.0.1", port + 1))
-    reply.settimeout(30.0)
-    log = open(os.path.join(out, "serve.log"), "w")
-    serve = subprocess.Popen([ig, "serve", "--config", os.path.join(src, "scenarios/sierra_owens_valley.json"),
-                              "--cigi", f"127.0.0.1:{port}", "--cigi-reply", f"127.0.0.1:{port + 1}",
-                              "--latency", "sync", "--frames", "4", "--size", "160x120",
-                              "--out", os.path.join(out, "serve"), "--quiet"], stdout=log, stderr=log)
-    send = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    serve, reply, send = start_sync_ig(ig, src, out, port, ["--frames", "4"])
     answers = []
     try:
         reply.recvfrom(65535)  # the Start Of Frame before the first host frame

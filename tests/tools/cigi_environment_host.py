@@ -121,6 +121,21 @@ def parse_ig(d):
     return last_host_frame, out
 
 
+def start_sync_ig(ig, src, out, port, stop_args):
+    """ig serve on the Sierra DEM in CIGI synchronous operation, answering on
+    port + 1: (the process, the reply socket, the host's send socket)."""
+    os.makedirs(out, exist_ok=True)
+    reply = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    reply.bind(("127.0.0.1", port + 1))
+    reply.settimeout(30.0)  # a hung IG fails the test instead of hanging it
+    log = open(os.path.join(out, "serve.log"), "w")
+    serve = subprocess.Popen([ig, "serve", "--config", os.path.join(src, "scenarios/sierra_owens_valley.json"),
+                              "--cigi", f"127.0.0.1:{port}", "--cigi-reply", f"127.0.0.1:{port + 1}",
+                              "--latency", "sync", *stop_args, "--size", "160x120",
+                              "--out", os.path.join(out, "serve"), "--quiet"], stdout=log, stderr=log)
+    return serve, reply, socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+
+
 # --------------------------------------------------------- NOAA solar position
 def noaa_sun(year, month, day, hour, minute, lat, lon):
     """Elevation (with NOAA's refraction) and azimuth, degrees (NOAA's spreadsheet equations)."""
@@ -160,16 +175,7 @@ def main():
     if not os.environ.get("IG_DEM_DIR"):
         print("IG_DEM_DIR not set: CIGI environment test skipped")
         return 77
-    os.makedirs(out, exist_ok=True)
-    reply = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-    reply.bind(("127.0.0.1", port + 1))
-    reply.settimeout(30.0)  # a hung IG fails the test instead of hanging it
-    log = open(os.path.join(out, "serve.log"), "w")
-    serve = subprocess.Popen([ig, "serve", "--config", os.path.join(src, "scenarios/sierra_owens_valley.json"),
-                              "--cigi", f"127.0.0.1:{port}", "--cigi-reply", f"127.0.0.1:{port + 1}",
-                              "--latency", "sync", "--seconds", "600", "--size", "160x120",
-                              "--out", os.path.join(out, "serve"), "--quiet"], stdout=log, stderr=log)
-    send = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    serve, reply, send = start_sync_ig(ig, src, out, port, ["--seconds", "600"])
     answers = []
     try:
         reply.recvfrom(65535)  # the IG's Start Of Frame before the first host frame

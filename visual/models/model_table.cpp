@@ -94,7 +94,7 @@ LodLevel read_level(const TableReader& r, const json& j, const std::string& key,
 EntityModels read_entity(const TableReader& r, const json& j, const std::string& key,
                          const std::filesystem::path& dir) {
   r.require_object(j, key);
-  r.only_keys(j, key, {"type", "name", "lods", "comment"});
+  r.only_keys(j, key, {"type", "name", "lods", "parts", "comment"});
   EntityModels e;
   const json& type = r.member(j, key, "type");
   if (!type.is_number_integer() || type.get<long long>() < 0 || type.get<long long>() > 65535) {
@@ -114,6 +114,19 @@ EntityModels read_entity(const TableReader& r, const json& j, const std::string&
       r.fail(TableReader::join(TableReader::at(lods_key, i), "min_size_px"), why.str());
     }
     e.lods.push_back(std::move(level));
+  }
+  if (j.contains("parts")) {
+    // CIGI articulated part id -> the node it moves, by name.
+    const std::string parts_key = TableReader::join(key, "parts");
+    r.require_object(j["parts"], parts_key);
+    for (auto it = j["parts"].begin(); it != j["parts"].end(); ++it) {
+      const std::string part_key = TableReader::join(parts_key, it.key());
+      const std::string& id = it.key();
+      if (id.empty() || id.size() > 3 || !std::all_of(id.begin(), id.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
+          std::stoi(id) > 255)
+        r.fail(part_key, "a part id must be an integer in 0..255");
+      e.parts[std::uint8_t(std::stoi(id))] = r.text(it.value(), part_key);
+    }
   }
   return e;
 }

@@ -19,6 +19,7 @@
 // themselves are loaded with load_model (models/model_loader.h).
 
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,6 +37,9 @@ struct EntityModels {
   std::uint16_t type = 0;     // the host's entity type
   std::string name;
   std::vector<LodLevel> lods;  // finest first; min_size_px strictly decreasing
+  // CIGI articulated part id -> the name of the node it moves (optional:
+  // "parts": {"1": "rudder"}); a level without that node leaves it still.
+  std::map<std::uint8_t, std::string> parts;
 };
 
 struct ModelTable {

@@ -24,6 +24,36 @@ void add_face(models::Primitive& p, glm::vec3 n, glm::vec3 u, glm::vec3 v, glm::
 
 }  // namespace
 
+glm::mat4 articulation_in_gltf(const EntityPartPose& part) {
+  // Body axes in glTF's: forward +Z, right -X, down -Y.
+  const glm::vec3 forward(0, 0, 1), right(-1, 0, 0), down(0, -1, 0);
+  const glm::vec3& o = part.offset_m;
+  const glm::vec3& a = glm::radians(part.roll_pitch_yaw_deg);
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), forward * o.x + right * o.y + down * o.z);
+  m = glm::rotate(m, a.z, down);     // yaw: nose right
+  m = glm::rotate(m, a.y, right);    // pitch: nose up
+  return glm::rotate(m, a.x, forward);  // roll: right side down
+}
+
+namespace {
+// Each node's transform to model space with the moved parts' local
+// transforms changed (parents come before children).
+std::vector<glm::mat4> moved_nodes(const std::vector<models::Node>& nodes, const std::map<std::uint8_t, int>& part_nodes,
+                                   const std::vector<EntityPartPose>& parts) {
+  std::vector<glm::mat4> local(nodes.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k) local[k] = nodes[k].local;
+  for (const EntityPartPose& p : parts) {
+    const auto it = part_nodes.find(p.id);
+    if (it == part_nodes.end()) continue;
+    local[std::size_t(it->second)] = p.enabled ? local[std::size_t(it->second)] * articulation_in_gltf(p) : glm::mat4(0.0f);
+  }
+  std::vector<glm::mat4> out(nodes.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    out[k] = nodes[k].parent < 0 ? local[k] : out[std::size_t(nodes[k].parent)] * local[k];
+  return out;
+}
+}  // namespace
+
 glm::dmat4 ig_body_from_gltf() {
   return glm::dmat4(glm::dvec4(-1.0, 0.0, 0.0, 0.0),  // glTF +X (left)  -> body -x
                     glm::dvec4(0.0, 0.0, 1.0, 0.0),   // glTF +Y (up)    -> body +z
@@ -73,7 +103,7 @@ std::vector<std::string> EntityRenderer::take_messages() {
 EntityRenderer::TypeModels EntityRenderer::box_models() const {
   TypeModels t;
   const models::Model box = box_model(table_ ? table_->default_box_m : glm::vec3(4.0f, 2.0f, 1.5f));
-  t.levels.push_back({std::make_unique<gl::EntityMesh>(box), box.node_to_model(), box.bounds, 0.0});
+  t.levels.push_back({std::make_unique<gl::EntityMesh>(box), box.node_to_model(), box.nodes, {}, box.bounds, 0.0});
   return t;
 }
 
@@ -94,7 +124,11 @@ const EntityRenderer::TypeModels& EntityRenderer::models_for(std::uint16_t type)
         break;
       }
       const models::Model& m = *load.model;
-      t.levels.push_back({std::make_unique<gl::EntityMesh>(m), m.node_to_model(), m.bounds, lod.min_size_px});
+      std::map<std::uint8_t, int> part_nodes;
+      for (const auto& [id, name] : entry->parts)
+        if (const int node = m.node_index(name); node >= 0) part_nodes[id] = node;
+      t.levels.push_back(
+          {std::make_unique<gl::EntityMesh>(m), m.node_to_model(), m.nodes, part_nodes, m.bounds, lod.min_size_px});
     }
   }
   if (t.levels.empty()) t = box_models();
@@ -134,8 +168,10 @@ EntityDrawStats EntityRenderer::draw(const Camera& camera, const glm::dvec3& wor
     const Level& l = t.levels[std::size_t(level)];
     gl::EntityInstanceData data;
     data.alpha = e.alpha;
-    data.node_to_eye.reserve(l.node_to_model.size());
-    for (const glm::mat4& n : l.node_to_model) data.node_to_eye.push_back(glm::mat4(placed * glm::dmat4(n)));
+    const std::vector<glm::mat4> moved = e.parts.empty() ? std::vector<glm::mat4>() : moved_nodes(l.nodes, l.part_nodes, e.parts);
+    const std::vector<glm::mat4>& nodes = e.parts.empty() ? l.node_to_model : moved;
+    data.node_to_eye.reserve(nodes.size());
+    for (const glm::mat4& n : nodes) data.node_to_eye.push_back(glm::mat4(placed * glm::dmat4(n)));
     groups[{e.type, level}].push_back(std::move(data));
     ++stats.in_view;
   }

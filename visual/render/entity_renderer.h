@@ -30,15 +30,32 @@
 
 namespace ig::render {
 
+// An articulated part as a host moves it (CIGI Articulated Part Control):
+// offsets (x forward, y right, z down, metres) and roll, pitch, yaw (deg)
+// from the part's place in the model; disabled: not drawn. The model
+// table's `parts` names the node each id moves.
+struct EntityPartPose {
+  std::uint8_t id = 0;
+  bool enabled = true;
+  glm::vec3 offset_m{0.0f};
+  glm::vec3 roll_pitch_yaw_deg{0.0f};
+};
+
 // One entity in one frame: its type, where it is (the pose's world frame,
-// as the ownship) and how opaque.
+// as the ownship), how opaque and how its parts are moved.
 struct EntityInstance {
   std::uint16_t id = 0;
   std::uint16_t type = 0;
   glm::dvec3 position{0.0};
   glm::dquat attitude{1.0, 0.0, 0.0, 0.0};  // body (x right, y forward, z up) -> world
   float alpha = 1.0f;
+  std::vector<EntityPartPose> parts;
 };
+
+// A part's move as a transform in glTF's axes (after the node's own local
+// transform): translate by the offsets, then yaw, pitch and roll about the
+// body's down, right and forward axes.
+glm::mat4 articulation_in_gltf(const EntityPartPose& part);
 
 struct EntityDrawStats {
   std::size_t in_view = 0;     // entities drawn (after culling)
@@ -67,7 +84,9 @@ class EntityRenderer {
  private:
   struct Level {
     std::unique_ptr<gl::EntityMesh> mesh;
-    std::vector<glm::mat4> node_to_model;
+    std::vector<glm::mat4> node_to_model;     // at rest
+    std::vector<models::Node> nodes;          // for moved parts
+    std::map<std::uint8_t, int> part_nodes;   // articulated part id -> node
     models::Bounds bounds;
     double min_size_px = 0.0;
   };

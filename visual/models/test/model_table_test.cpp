@@ -96,6 +96,22 @@ TEST_F(Table, Errors) {
   expect_error(table("[]", R"("default_box_m": {"x": 4, "y": 0, "z": 1}, )"), "default_box_m.y",
                "must be a number in [0.01, 1000] (got 0)");
   expect_error(table("[]", R"("default_box_m": [4, 2, 1], )"), "default_box_m", "must be an object");
+  expect_error(table(R"([{"type": 1, "name": "x", "lods": )" + lod + R"(, "parts": {"256": "rudder"}}])"),
+               "entities[0].parts.256", "a part id must be an integer in 0..255");
+  expect_error(table(R"([{"type": 1, "name": "x", "lods": )" + lod + R"(, "parts": {"one": "rudder"}}])"),
+               "entities[0].parts.one", "a part id must be an integer in 0..255");
+  expect_error(table(R"([{"type": 1, "name": "x", "lods": )" + lod + R"(, "parts": {"1": ""}}])"),
+               "entities[0].parts.1", "must be a non-empty string");
+  expect_error(table(R"([{"type": 1, "name": "x", "lods": )" + lod + R"(, "parts": ["rudder"]}])"),
+               "entities[0].parts", "must be an object");
+}
+
+// Articulated part ids name the nodes they move.
+TEST_F(Table, PartsNameTheirNodes) {
+  const ModelTable t = load_model_table(table(R"([{"type": 4, "name": "tank", "lods": [{"file": "a.glb", "min_size_px": 0}],
+                                                   "parts": {"1": "turret", "12": "gun"}}])"));
+  EXPECT_EQ(t.find(4)->parts, (std::map<std::uint8_t, std::string>{{1, "turret"}, {12, "gun"}}));
+  EXPECT_TRUE(load_model_table(table(kGood)).find(7)->parts.empty());
 }
 
 TEST_F(Table, NotATable) {

@@ -98,7 +98,7 @@ void check_entity(const std::string& method, const std::string& aa, double along
   const glm::dvec3 ground = ground_ahead(runner, along_m);
   const auto& cam = runner.channels().front().camera;
   const double distance = glm::length(ground - cam.position);
-  EntityInstance above{1, type, ground + glm::dvec3(0, 0, 25.0), ig::io::attitude_from_hpr({30.0, 0.0, 0.0}), 1.0f};
+  EntityInstance above{1, type, ground + glm::dvec3(0, 0, 25.0), ig::io::attitude_from_hpr({30.0, 0.0, 0.0}), 1.0f, {}};
   const Frame with = draw(runner, {above});
   // Half the model's length at `distance`, and the anti-aliasing filter's reach.
   const double px_per_m = h / (2.0 * std::tan(glm::radians(cam.fov_y_deg) / 2.0)) / distance;
@@ -151,7 +151,7 @@ TEST(Entities, AnUnknownTypeIsABoxAndSaidOnce) {
   ScenarioRunner runner(s, headless_run(w, h, "twolevel"));
   draw(runner, {});
   const glm::dvec3 ground = ground_ahead(runner, 0.0);
-  const EntityInstance unknown{5, 999, ground + glm::dvec3(0, 0, 2.0), {1, 0, 0, 0}, 1.0f};
+  const EntityInstance unknown{5, 999, ground + glm::dvec3(0, 0, 2.0), {1, 0, 0, 0}, 1.0f, {}};
   const Frame f = draw(runner, {unknown, unknown});
   EXPECT_EQ(f.view.entities.in_view, 2u);
   EXPECT_EQ(f.view.entities.batches, 1u);  // one instanced batch for both
@@ -176,7 +176,7 @@ TEST(Entities, EachDefaultModelCloseUp) {
   struct Case { std::uint16_t type; double distance_m; const char* name; };
   for (const Case c : {Case{1, 30.0, "aircraft"}, Case{2, 15.0, "ground_vehicle"}, Case{3, 140.0, "ship"}}) {
     const glm::dvec3 at = cam.position + cam.forward() * c.distance_m;
-    const EntityInstance e{7, c.type, at, ig::io::attitude_from_hpr({ig::io::hpr_from_attitude(cam.attitude).heading_deg + 60.0, 0.0, 0.0}), 1.0f};
+    const EntityInstance e{7, c.type, at, ig::io::attitude_from_hpr({ig::io::hpr_from_attitude(cam.attitude).heading_deg + 60.0, 0.0, 0.0}), 1.0f, {}};
     const Frame bare = draw(runner, {});
     const Frame f = draw(runner, {e});
     dump_frame("IG_ENTITY_DUMP", f.rgba, w, h, std::string("entity_") + c.name);
@@ -219,6 +219,42 @@ TEST(Entities, AViewRidesOnItsEntity) {
   draw(runner, {});
   const ig::io::Pose own = looking_down(runner);
   EXPECT_NEAR(glm::length(runner.channels().front().camera.position - own.position), std::hypot(30.0, 8.0), 1e-6);
+}
+
+// Articulated parts move the nodes the model table names: the ground
+// vehicle's turret turned 90 degrees changes the picture where the vehicle
+// is; its gun disabled takes pixels away; an id the table does not name
+// changes nothing.
+TEST(Entities, ArticulatedPartsMoveTheirNodes) {
+  const int w = 320, h = 180;
+  ig::io::Scenario s = ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json");
+  ScenarioRunner runner(s, headless_run(w, h, "twolevel"));
+  g_pitch_deg = -10.0;
+  draw(runner, {});
+  const auto& cam = runner.channels().front().camera;
+  const double heading = ig::io::hpr_from_attitude(cam.attitude).heading_deg;
+  EntityInstance vehicle{9, 2, cam.position + cam.forward() * 14.0, ig::io::attitude_from_hpr({heading + 90.0, 0.0, 0.0}), 1.0f, {}};
+  const Frame bare = draw(runner, {});
+  const Frame rest = draw(runner, {vehicle});
+  auto turned = vehicle;
+  turned.parts = {{1, true, {0, 0, 0}, {0, 0, 90}}};  // turret: yaw 90
+  const Frame turret = draw(runner, {turned});
+  auto no_gun = vehicle;
+  no_gun.parts = {{2, false, {0, 0, 0}, {0, 0, 0}}};  // gun hidden
+  const Frame gunless = draw(runner, {no_gun});
+  auto unknown = vehicle;
+  unknown.parts = {{77, true, {5, 5, 5}, {40, 40, 40}}};
+  const Frame same = draw(runner, {unknown});
+  const long long drawn = compare(bare, rest, w, {}).pixels;
+  const long long moved = compare(rest, turret, w, {}).pixels;
+  const long long without_gun = compare(bare, gunless, w, {}).pixels;
+  std::printf("[entities] vehicle: %lld pixels; turret turned 90 deg: %lld change; gun hidden: %lld pixels\n", drawn,
+              moved, without_gun);
+  EXPECT_GT(moved, 20);
+  EXPECT_LT(moved, drawn + 50);  // only around the vehicle
+  EXPECT_LT(without_gun, drawn);
+  EXPECT_EQ(compare(rest, same, w, {}).pixels, 0);
+  g_pitch_deg = -25.0;
 }
 
 }  // namespace
