@@ -313,6 +313,11 @@ void append_work_columns(std::vector<stats::Cell>& row, const render::ViewResult
     row.emplace_back(p.name + "_draws", n(p.draw_calls));
     row.emplace_back(p.name + "_passed", n(p.samples_passed));
     if (p.ms >= 0.0) row.emplace_back(p.name + "_pass_ms", p.ms);
+    if (p.name == "entities") {  // the entity pass's own counts (docs/entities.md)
+      row.emplace_back("entities_drawn", n(v.entities.in_view));
+      row.emplace_back("entities_culled", n(v.entities.culled));
+      row.emplace_back("entities_over_budget", n(v.entities.over_budget));
+    }
   }
 }
 

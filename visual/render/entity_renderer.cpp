@@ -89,8 +89,8 @@ models::Model box_model(const glm::vec3& size_m) {
 }
 
 EntityRenderer::EntityRenderer(std::string shader_dir, std::optional<models::ModelTable> table,
-                               models::ModelLimits limits)
-    : shader_dir_(std::move(shader_dir)), table_(std::move(table)), limits_(limits) {}
+                               models::ModelLimits limits, std::size_t max_drawn)
+    : shader_dir_(std::move(shader_dir)), table_(std::move(table)), limits_(limits), max_drawn_(max_drawn) {}
 
 EntityRenderer::~EntityRenderer() = default;
 
@@ -145,6 +145,14 @@ EntityDrawStats EntityRenderer::draw(const Camera& camera, const glm::dvec3& wor
   const glm::dmat4 to_body = ig_body_from_gltf();
   // Instances grouped by (type, level): one batch each.
   std::map<std::pair<std::uint16_t, int>, std::vector<gl::EntityInstanceData>> groups;
+  struct Visible {
+    const EntityInstance* entity;
+    int level;
+    double distance;
+    glm::dmat4 placed;
+  };
+  std::vector<Visible> visible;
+  visible.reserve(instances_.size());
   for (const EntityInstance& e : instances_) {
     const TypeModels& t = models_for(e.type);
     const glm::dvec3 rel = e.position - world_eye;
@@ -165,7 +173,20 @@ EntityDrawStats EntityRenderer::draw(const Camera& camera, const glm::dvec3& wor
       ++stats.culled;
       continue;
     }
-    const Level& l = t.levels[std::size_t(level)];
+    visible.push_back({&e, level, distance, placed});
+  }
+  // Beyond the budget: the nearest are drawn, the rest counted.
+  if (visible.size() > max_drawn_) {
+    std::nth_element(visible.begin(), visible.begin() + std::ptrdiff_t(max_drawn_), visible.end(),
+                     [](const Visible& a, const Visible& b) { return a.distance < b.distance; });
+    stats.over_budget = visible.size() - max_drawn_;
+    visible.resize(max_drawn_);
+  }
+  for (const Visible& v : visible) {
+    const EntityInstance& e = *v.entity;
+    const int level = v.level;
+    const glm::dmat4& placed = v.placed;
+    const Level& l = types_.at(e.type).levels[std::size_t(level)];
     gl::EntityInstanceData data;
     data.alpha = e.alpha;
     const std::vector<glm::mat4> moved = e.parts.empty() ? std::vector<glm::mat4>() : moved_nodes(l.nodes, l.part_nodes, e.parts);

@@ -60,6 +60,7 @@ glm::mat4 articulation_in_gltf(const EntityPartPose& part);
 struct EntityDrawStats {
   std::size_t in_view = 0;     // entities drawn (after culling)
   std::size_t culled = 0;      // outside the frustum or too small for every level
+  std::size_t over_budget = 0;  // in view but beyond the per-view budget (the farthest)
   std::size_t batches = 0;     // model levels drawn (one instanced draw per part each)
   std::uint64_t triangles = 0;
 };
@@ -67,8 +68,12 @@ struct EntityDrawStats {
 class EntityRenderer {
  public:
   // table: the entity type -> model table; nullopt: every type a box of the
-  // default size (4 x 2 x 1.5 m).
-  EntityRenderer(std::string shader_dir, std::optional<models::ModelTable> table, models::ModelLimits limits = {});
+  // default size (4 x 2 x 1.5 m). max_drawn: entities drawn per view at
+  // most, the nearest (a frame rate bound for crowded scenes; the rest are
+  // counted in EntityDrawStats::over_budget).
+  static constexpr std::size_t kDefaultMaxDrawn = 2000;
+  EntityRenderer(std::string shader_dir, std::optional<models::ModelTable> table, models::ModelLimits limits = {},
+                 std::size_t max_drawn = kDefaultMaxDrawn);
   ~EntityRenderer();
 
   void set_instances(std::vector<EntityInstance> instances) { instances_ = std::move(instances); }
@@ -99,6 +104,7 @@ class EntityRenderer {
   std::string shader_dir_;
   std::optional<models::ModelTable> table_;
   models::ModelLimits limits_;
+  std::size_t max_drawn_;
   std::unique_ptr<gl::EntityPass> pass_;  // made on the first draw with an entity
   std::map<std::uint16_t, TypeModels> types_;
   std::vector<EntityInstance> instances_;

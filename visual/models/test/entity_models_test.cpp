@@ -203,14 +203,21 @@ TEST(EntityModels, DefaultTable) {
   for (std::uint16_t type = 1; type <= 3; ++type) {
     const EntityModels* e = table.find(type);
     ASSERT_NE(e, nullptr) << "type " << type;
-    ASSERT_EQ(e->lods.size(), 2u);
+    ASSERT_EQ(e->lods.size(), 3u);
     EXPECT_NE(e->lods[0].file.find(expected[type - 1]), std::string::npos) << e->lods[0].file;
-    const ModelLoad fine = load_model(e->lods[0].file), coarse = load_model(e->lods[1].file);
-    ASSERT_TRUE(fine.ok() && coarse.ok()) << fine.error << coarse.error;
+    const ModelLoad fine = load_model(e->lods[0].file), coarse = load_model(e->lods[1].file),
+                    far = load_model(e->lods[2].file);
+    ASSERT_TRUE(fine.ok() && coarse.ok() && far.ok()) << fine.error << coarse.error << far.error;
     EXPECT_LT(coarse.model->triangles, fine.model->triangles);
+    EXPECT_EQ(far.model->triangles, 12u);  // one box
+    // The far box spans the fine model's extent, within a metre.
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(far.model->bounds.min[a], fine.model->bounds.min[a], 1.0) << e->name << " axis " << a;
+      EXPECT_NEAR(far.model->bounds.max[a], fine.model->bounds.max[a], 1.0) << e->name << " axis " << a;
+    }
     EXPECT_EQ(choose_lod(*e, 1000.0), 0);
-    EXPECT_EQ(choose_lod(*e, 10.0), 1);
-    EXPECT_EQ(choose_lod(*e, 0.5), 1);  // the coarse level goes down to 0 px: traffic never vanishes for size
+    EXPECT_EQ(choose_lod(*e, 20.0), 1);
+    EXPECT_EQ(choose_lod(*e, 0.5), 2);  // the far box goes down to 0 px: traffic never vanishes for size
   }
   EXPECT_EQ(table.find(4), nullptr);
   EXPECT_GT(table.default_box_m.x, 0.0f);

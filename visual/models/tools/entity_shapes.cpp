@@ -375,4 +375,14 @@ EntityModel build_ship(Detail d) {
   return e;
 }
 
+EntityModel build_far(const std::string& file, glm::vec3 lo, glm::vec3 hi, glm::vec4 colour) {
+  EntityModel e;
+  e.file = file;
+  e.materials = {{"far", colour}};
+  MeshData m = mesh("far", 0);
+  add_box(m, lo, hi);
+  add_node(e, "far", -1, {0, 0, 0}, add_mesh(e, std::move(m)));
+  return e;
+}
+
 }  // namespace ig::models::shapes

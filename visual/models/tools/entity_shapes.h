@@ -64,5 +64,9 @@ struct EntityModel {
 EntityModel build_aircraft(designs::Detail detail);
 EntityModel build_ground_vehicle(designs::Detail detail);
 EntityModel build_ship(designs::Detail detail);
+// The farthest level of each: one box (12 triangles) of the model's extent
+// and main colour, for entities a few pixels across, where a CPU rasterizer
+// pays per vertex (docs/models.md).
+EntityModel build_far(const std::string& file, glm::vec3 lo, glm::vec3 hi, glm::vec4 colour);
 
 }  // namespace ig::models::shapes

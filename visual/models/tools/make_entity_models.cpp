@@ -147,6 +147,8 @@ tinygltf::Model to_gltf(const shapes::EntityModel& e) {
 
 }  // namespace
 
+glm::vec3 vec(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: make_entity_models OUT_DIR\n");
@@ -171,6 +173,13 @@ int main(int argc, char** argv) {
       {shapes::build_ground_vehicle(Detail::Coarse), designs::vehicle_triangles(Detail::Coarse)},
       {shapes::build_ship(Detail::Fine), designs::ship_triangles(Detail::Fine)},
       {shapes::build_ship(Detail::Coarse), designs::ship_triangles(Detail::Coarse)},
+      // One box over each design's extent (glTF axes), in its main colour.
+      {shapes::build_far("aircraft_far.glb", vec(designs::kAircraftBounds.min), vec(designs::kAircraftBounds.max),
+                         {0.92f, 0.92f, 0.95f, 1.0f}), 12},
+      {shapes::build_far("ground_vehicle_far.glb", vec(designs::kVehicleBounds.min), vec(designs::kVehicleBounds.max),
+                         {0.30f, 0.36f, 0.18f, 1.0f}), 12},
+      {shapes::build_far("ship_far.glb", vec(designs::kShipBounds.min), vec(designs::kShipBounds.max),
+                         {0.45f, 0.47f, 0.50f, 1.0f}), 12},
   };
   for (const Job& job : jobs) {
     // The builder must make what the design says, or the tests' figures lie.

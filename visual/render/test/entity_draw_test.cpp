@@ -257,4 +257,24 @@ TEST(Entities, ArticulatedPartsMoveTheirNodes) {
   g_pitch_deg = -25.0;
 }
 
+// More entities in view than the per-view budget: the nearest are drawn,
+// the farthest counted.
+TEST(Entities, TheNearestWithinTheBudgetAreDrawn) {
+  ig::io::Scenario s = ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json");
+  ScenarioRunner runner(s, headless_run(160, 120, "twolevel"));
+  draw(runner, {});
+  ig::render::EntityRenderer budget(std::string(IG_BIN_DIR) + "/shaders", std::nullopt, {}, 3);
+  runner.channels().front().renderer->set_entities(&budget);
+  const auto& cam = runner.channels().front().camera;
+  std::vector<EntityInstance> five;
+  for (int k = 0; k < 5; ++k)
+    five.push_back({std::uint16_t(k + 1), 1, cam.position + cam.forward() * (40.0 + 30.0 * k), cam.attitude, 1.0f, {}});
+  budget.set_instances(five);
+  runner.render_pose(0, 0.0, looking_down(runner));
+  const auto& v = runner.channels().front().last;
+  EXPECT_EQ(v.entities.in_view, 3u);
+  EXPECT_EQ(v.entities.over_budget, 2u);
+  runner.channels().front().renderer->set_entities(nullptr);
+}
+
 }  // namespace
