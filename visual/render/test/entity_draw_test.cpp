@@ -138,6 +138,39 @@ TEST(Entities, DrawnAboveTheGroundHiddenUnderItForEveryMethod) {
     check_entity(method, "fxaa", 0.0);
 }
 
+// In two-level's band: just outside the Level1 square, within the band's
+// width, where Level0's pixels are shaded with the blended coordinate. The
+// entity is drawn there 25 m up and hidden 100 m under the ground.
+TEST(Entities, InTwoLevelsBand) {
+  const int w = 320, h = 240;
+  ig::io::Scenario s = ig::io::load_scenario(std::string(IG_SOURCE_DIR) + "/scenarios/default.json");
+  ScenarioRunner runner(s, headless_run(w, h, "twolevel"));
+  const Frame bare = draw(runner, {});
+  auto* two = dynamic_cast<ig::render::TwoLevelMethod*>(&runner.method());
+  ASSERT_NE(two, nullptr);
+  const auto& hf = runner.heightfield();
+  const auto& cam = runner.channels().front().camera;
+  const int n = two->level1_size(), band = two->band_width_samples();
+  ASSERT_GT(band, 0);
+  // From the square's centre, along the view's heading, half a band beyond its far edge.
+  const glm::dvec2 centre = (glm::dvec2(two->level1_origin()) + 0.5 * double(n - 1)) *
+                            glm::dvec2(hf.spacing_x_m, hf.spacing_y_m);
+  const glm::dvec2 heading = glm::normalize(glm::dvec2(cam.forward()));
+  const double reach = 0.5 * double(n - 1) / std::max(std::abs(heading.x), std::abs(heading.y)) + 0.5 * band;
+  const glm::dvec2 at = centre + heading * reach * hf.spacing_x_m;
+  const glm::dvec3 ground(at, hf.sample_surface(at.x, at.y));
+  EntityInstance above{1, 1, ground + glm::dvec3(0, 0, 25.0), ig::io::attitude_from_hpr({30.0, 0.0, 0.0}), 1.0f, {}};
+  const Frame with = draw(runner, {above});
+  const Difference d = compare(bare, with, w, project(cam, above.position, w, h));
+  std::printf("[entities] two-level band (Level1 %d samples, band %d): %lld pixels changed, farthest %.1f px\n", n, band,
+              d.pixels, d.farthest_px);
+  EXPECT_GT(d.pixels, 0);
+  EXPECT_LE(d.farthest_px, 10.0);
+  EntityInstance under = above;
+  under.position = ground - glm::dvec3(0, 0, 100.0);
+  EXPECT_EQ(compare(bare, draw(runner, {under}), w, {}).pixels, 0);
+}
+
 TEST(Entities, TwoLevelsLevel0AndMultisampling) {
   g_pitch_deg = -12.0;
   check_entity("twolevel", "fxaa", 6000.0, 3);  // far beyond Level1: on Level0
