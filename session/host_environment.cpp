@@ -1,6 +1,7 @@
 #include "session/host_environment.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <variant>
 
@@ -13,6 +14,27 @@ namespace {
 const char* object_class_name(int c) {
   static constexpr const char* kNames[] = {"entity", "articulated part", "view", "view group", "motion tracker"};
   return c >= 0 && c < 5 ? kNames[c] : "object";
+}
+
+// Humidity, temperature, winds and pressure as the host set them (Atmosphere
+// Control), else the ICAO standard atmosphere at `altitude_m` (15 °C and
+// 1013.25 hPa at sea level, -6.5 K/km in the troposphere, dry and calm):
+// never the 0 hPa of an unset field.
+CigiWeatherConditions weather_conditions(const std::optional<CigiAtmosphere>& set, double altitude_m) {
+  CigiWeatherConditions w;
+  if (set) {
+    w.humidity_pct = set->humidity_pct;
+    w.air_temp_c = set->air_temp_c;
+    w.horizontal_wind_mps = set->horizontal_wind_mps;
+    w.vertical_wind_mps = set->vertical_wind_mps;
+    w.wind_direction_deg = set->wind_direction_deg;
+    w.pressure_hpa = set->pressure_hpa;
+    return w;
+  }
+  const double h = std::clamp(altitude_m, -1000.0, 11000.0);  // the troposphere's formula
+  w.air_temp_c = float(15.0 - 0.0065 * h);
+  w.pressure_hpa = float(1013.25 * std::pow(1.0 - 0.0065 * h / 288.15, 5.25588));
+  return w;
 }
 
 // IG Message ids: 1000 and up, one per message sent.
@@ -56,7 +78,10 @@ void HostEnvironment::take(const CigiHostPackets& p) {
             " cannot be loaded: this IG renders the terrain it was started with");
   if (!p.celestial.empty()) celestial_ = p.celestial.back();
   counters_.packets["celestial_sphere_controls"] += p.celestial.size();
-  if (!p.atmosphere.empty()) atmosphere_visibility_m_ = p.atmosphere.back().visibility_m;
+  if (!p.atmosphere.empty()) {
+    atmosphere_ = p.atmosphere.back();
+    atmosphere_visibility_m_ = atmosphere_->visibility_m;
+  }
   for (const auto& w : p.weather) {
     if (w.scope != 0) continue;  // regional and entity weather: counted only
     if (w.enabled) layers_[w.layer] = w;
@@ -188,7 +213,7 @@ void HostEnvironment::append_frame_packets(const io::Pose& ownship, std::span<co
 
   for (const auto& r : conditions_) {
     if (r.types & kCigiConditionsWeather && fits(kCigiWeatherConditionsResponseSize)) {
-      CigiWeatherConditions w;
+      CigiWeatherConditions w = weather_conditions(atmosphere_, r.point.z);
       w.request_id = r.id;
       w.visibility_m = float(visibility_m);
       append_cigi_weather_conditions(w, swap, out);

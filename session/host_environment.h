@@ -93,6 +93,7 @@ class HostEnvironment {
   LocalToGeodetic to_geodetic_;
   std::optional<io::wire::CigiCelestialSphere> celestial_;  // not yet applied
   std::optional<double> atmosphere_visibility_m_;
+  std::optional<io::wire::CigiAtmosphere> atmosphere_;  // the last Atmosphere Control, echoed by Weather Conditions
   std::map<int, io::wire::CigiWeatherControl> layers_;      // global weather layers, by layer id
   double own_visibility_m_;
   double visibility_in_force_m_;

@@ -150,4 +150,33 @@ TEST(HostEnvironment, UnsupportedOpcodesAreCountedAndAnsweredOnce) {
   EXPECT_EQ(f.env.summary()["unsupported"]["4"], 3);
 }
 
+// The Weather Conditions Response echoes what Atmosphere Control set; before
+// any, the standard atmosphere at the request's altitude (not 0 hPa).
+TEST(HostEnvironment, WeatherConditionsEchoTheAtmosphere) {
+  Fixture f;
+  CigiEnvironmentRequest r;
+  r.types = kCigiConditionsWeather;
+  r.id = 7;
+  r.point = {36.7, -118.06, 1500.0};
+  f.send(kCigiModeOperate, encode_cigi_environment_request(r, false));
+  CigiIgPackets p = f.frame();
+  ASSERT_EQ(p.weather.size(), 1u);
+  // ICAO standard atmosphere at 1 500 m: 5.25 C, 845.6 hPa.
+  EXPECT_NEAR(p.weather[0].air_temp_c, 5.25f, 1e-3);
+  EXPECT_NEAR(p.weather[0].pressure_hpa, 845.6f, 0.1);
+  EXPECT_EQ(p.weather[0].humidity_pct, 0);
+  const CigiAtmosphere set{true, 63, -4.5f, 8000.0f, 12.0f, -1.5f, 250.0f, 1002.5f};
+  f.send(kCigiModeOperate, encode_cigi_atmosphere(set, false), encode_cigi_environment_request(r, false));
+  p = f.frame();
+  ASSERT_EQ(p.weather.size(), 1u);
+  const CigiWeatherConditions& w = p.weather[0];
+  EXPECT_EQ(w.request_id, 7);
+  EXPECT_EQ(w.humidity_pct, 63);
+  EXPECT_EQ(w.air_temp_c, -4.5f);
+  EXPECT_EQ(w.horizontal_wind_mps, 12.0f);
+  EXPECT_EQ(w.vertical_wind_mps, -1.5f);
+  EXPECT_EQ(w.wind_direction_deg, 250.0f);
+  EXPECT_EQ(w.pressure_hpa, 1002.5f);
+}
+
 }  // namespace
