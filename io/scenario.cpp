@@ -424,6 +424,8 @@ std::string expand_env(const std::string& text) {
     }
     const char* value = std::getenv(name.c_str());
     if (value == nullptr) throw ScenarioError("environment variable " + name + " is not set");
+    // An empty value would turn "${DIR}/file" into "/file": never what was meant.
+    if (*value == '\0') throw ScenarioError("environment variable " + name + " is set but empty (in \"" + text + "\")");
     out += value;
     i = next;
   }

@@ -1,5 +1,6 @@
 #include "io/scenario_json.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -16,8 +17,17 @@ namespace ig::io::scenario_json {
 }
 
 std::string child(const std::string& path, std::string_view key) {
-  if (path.empty()) return std::string(key);
-  return path + "." + std::string(key);
+  // A key that is not a plain name (a space, a dot, nothing) is quoted, so
+  // "hpr " reads as itself in a message.
+  const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+  });
+  std::string out = path;
+  if (!out.empty()) out += '.';
+  if (!plain) out += '"';
+  out.append(key.data(), key.size());
+  if (!plain) out += '"';
+  return out;
 }
 
 std::string element(const std::string& path, std::size_t i) {

@@ -361,7 +361,13 @@ TEST(Scenario, ExpandEnv) {
   EXPECT_EQ(expand_env("${IG_SCN_TEST_A}/x.tif"), "/srv/dem/x.tif");
   EXPECT_EQ(expand_env("$IG_SCN_TEST_A/x.tif"), "/srv/dem/x.tif");
   EXPECT_EQ(expand_env("a${IG_SCN_TEST_A}b$IG_SCN_TEST_A"), "a/srv/demb/srv/dem");
-  EXPECT_EQ(expand_env("x${IG_SCN_TEST_EMPTY}y"), "xy");
+  // Set but empty: named, never silently "" ("${IG_DEM_DIR}/x.tif" would become "/x.tif").
+  try {
+    expand_env("${IG_SCN_TEST_EMPTY}/x.tif");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    EXPECT_STREQ(e.what(), "environment variable IG_SCN_TEST_EMPTY is set but empty (in \"${IG_SCN_TEST_EMPTY}/x.tif\")");
+  }
   EXPECT_EQ(expand_env("no vars"), "no vars");
   EXPECT_EQ(expand_env("cost $5 and $"), "cost $5 and $");  // a '$' not starting a name stays
   EXPECT_THROW(expand_env("${IG_SCN_TEST_A"), ScenarioError);
@@ -444,3 +450,10 @@ TEST(Scenario, ShippedScenariosParse) {
 }
 
 }  // namespace
+
+// A key that is not a plain name is quoted in the message: a trailing space shows.
+TEST(Scenario, AKeyWithASpaceIsQuoted) {
+  const std::string e = scenario_error_of(
+      doc("", R"({"generator": {"size": 257}})", R"({"keys": [{"t": 0, "position": [0, 0, 100], "hpr ": [0, 0, 0]}]})"));
+  EXPECT_NE(e.find("path.keys[0].\"hpr \": unknown key"), std::string::npos) << e;
+}
