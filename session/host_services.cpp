@@ -164,12 +164,11 @@ CigiResponse HostServices::respond(const CigiRequest& request, const io::Pose& o
   if (entity != kCigiOwnshipEntity && entity_lookup_) other = entity_lookup_(entity);
   const io::Pose& reference = other ? *other : ownship;
   const bool known = entity == kCigiOwnshipEntity || other.has_value();
-  ownship_ = ownship;
   return std::visit(
       [&](const auto& q) -> CigiResponse {
         using T = std::decay_t<decltype(q)>;
         if constexpr (std::is_same_v<T, HatHotRequest>) return hat_hot(q, reference, known);
-        else if constexpr (std::is_same_v<T, LosSegmentRequest>) return los_segment(q, reference, known);
+        else if constexpr (std::is_same_v<T, LosSegmentRequest>) return los_segment(q, reference, known, ownship);
         else return los_vector(q, reference, known);
       },
       request);
@@ -312,21 +311,22 @@ void HostServices::fill_hit(LosResponse& out, const std::optional<terrain::LosHi
   }
 }
 
-LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& ownship, bool entity_known) {
+LosResponse HostServices::los_segment(const LosSegmentRequest& r, const io::Pose& reference, bool entity_known,
+                                      const io::Pose& ownship) {
   LosResponse out = los_response_for(r, host_frame_);
-  const auto from = place(r.source, r.source_coords, entity_known, ownship);
+  const auto from = place(r.source, r.source_coords, entity_known, reference);
   // The destination may be relative to another entity (the ownship or one the lookup places).
   std::optional<io::Pose> other;
   if (r.destination_entity_valid && r.destination_entity != r.entity)
-    other = r.destination_entity == kCigiOwnshipEntity ? std::optional(ownship_)
+    other = r.destination_entity == kCigiOwnshipEntity ? std::optional(ownship)
             : entity_lookup_                            ? entity_lookup_(r.destination_entity)
                                                         : std::nullopt;
   const bool other_entity = r.destination_entity_valid && r.destination_entity != r.entity;
   const auto to = place(r.destination, r.destination_coords, other_entity ? other.has_value() : entity_known,
-                        other ? *other : ownship);
+                        other ? *other : reference);
   if (!from || !to || !query_.inside(from->x, from->y)) return out;
   out.valid = true;
-  fill_hit(out, query_.segment(*from, *to), r.response_coords, ownship);
+  fill_hit(out, query_.segment(*from, *to), r.response_coords, reference);
   return out;
 }
 

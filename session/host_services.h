@@ -126,8 +126,9 @@ class HostServices {
   // `reference`: the pose entity-relative points are relative to (the
   // request's entity); `entity_known`: the IG has that entity.
   io::wire::HatHotResponse hat_hot(const io::wire::HatHotRequest& r, const io::Pose& reference, bool entity_known);
+  // `ownship`: the frame's, for a destination relative to entity 0.
   io::wire::LosResponse los_segment(const io::wire::LosSegmentRequest& r, const io::Pose& reference,
-                                    bool entity_known);
+                                    bool entity_known, const io::Pose& ownship);
   io::wire::LosResponse los_vector(const io::wire::LosVectorRequest& r, const io::Pose& reference, bool entity_known);
   void fill_hit(io::wire::LosResponse& out, const std::optional<terrain::LosHit>& hit, io::wire::CigiCoords coords,
                 const io::Pose& ownship);
@@ -141,7 +142,6 @@ class HostServices {
   LocalToGeodetic to_geodetic_;
   DrawnHeight drawn_height_;
   EntityLookup entity_lookup_;
-  io::Pose ownship_;  // the frame's, while a request is answered
   HostServicesOptions options_;
   std::deque<Pending> queue_;
   std::map<std::pair<int, std::uint16_t>, Periodic> periodic_;  // (request kind, id)

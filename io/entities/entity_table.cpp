@@ -150,7 +150,7 @@ Pose EntityTable::extrapolated(const Entity& e, double time_s) const {
   return {position, attitude_from_hpr(hpr)};
 }
 
-std::optional<EntityPose> EntityTable::resolve(std::uint16_t id, double time_s, const Pose& ownship, int depth,
+std::optional<EntityPose> EntityTable::resolve(std::uint16_t id, double time_s, const Pose& ownship,
                                                std::vector<std::uint16_t>& chain) const {
   const auto it = entities_.find(id);
   if (it == entities_.end()) return std::nullopt;
@@ -176,7 +176,7 @@ std::optional<EntityPose> EntityTable::resolve(std::uint16_t id, double time_s, 
       parent = EntityPose{};
       parent->pose = ownship;
     } else {
-      parent = resolve(c.parent, time_s, ownship, depth + 1, chain);
+      parent = resolve(c.parent, time_s, ownship, chain);
     }
     if (!parent) {
       if (!entities_.count(c.parent) && c.parent != wire::kCigiOwnshipEntity)
@@ -206,7 +206,7 @@ std::optional<EntityPose> EntityTable::resolve(std::uint16_t id, double time_s, 
 
 std::optional<EntityPose> EntityTable::pose_of(std::uint16_t id, double time_s, const Pose& ownship) const {
   std::vector<std::uint16_t> chain;
-  return resolve(id, time_s, ownship, 0, chain);
+  return resolve(id, time_s, ownship, chain);
 }
 
 std::vector<EntityPose> EntityTable::poses_at(double time_s, const Pose& ownship) const {

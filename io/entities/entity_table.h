@@ -94,7 +94,8 @@ class EntityTable {
   // The host's values dead-reckoned to time_s: position (local, or offsets
   // when attached) and attitude (world, or relative to the parent).
   Pose extrapolated(const Entity& e, double time_s) const;
-  std::optional<EntityPose> resolve(std::uint16_t id, double time_s, const Pose& ownship, int depth,
+  // `chain`: the entities being resolved below this one (a repeat is a loop).
+  std::optional<EntityPose> resolve(std::uint16_t id, double time_s, const Pose& ownship,
                                     std::vector<std::uint16_t>& chain) const;
   void note(const std::string& text) const;
   void take_control(const wire::CigiEntityControl& c, double time_s);

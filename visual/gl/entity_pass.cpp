@@ -105,46 +105,53 @@ EntityPass::EntityPass(const std::string& shader_dir)
     : program_(shader_dir, "entity.vert", std::vector<std::string>{"entity.frag", "fog.frag"}),
       instances_(create_buffer()) {}
 
-void EntityPass::draw_parts(const Batch& b, bool translucent) {
-  const EntityMesh& mesh = *b.mesh;
-  const GLsizeiptr stride = sizeof(InstanceRecord);
-  const std::size_t count = b.instances->size();
-  std::vector<InstanceRecord> records(count);
-  for (const auto& part : mesh.parts_) {
-    if (part.blend != translucent) continue;
-    for (std::size_t i = 0; i < count; ++i) {
-      const auto& inst = (*b.instances)[i];
-      records[i] = {inst.node_to_eye[std::size_t(part.node)], glm::vec4(inst.alpha, 0.0f, 0.0f, 0.0f)};
-    }
-    const GLsizeiptr bytes = GLsizeiptr(count) * stride;
-    if (std::size_t(bytes) > capacity_) {
-      capacity_ = std::max<std::size_t>(std::size_t(bytes), 2 * capacity_);
-      glNamedBufferData(instances_.id(), GLsizeiptr(capacity_), nullptr, GL_STREAM_DRAW);
-    }
-    glNamedBufferSubData(instances_.id(), 0, bytes, records.data());
-    count_upload(std::uint64_t(bytes));
-    glVertexArrayVertexBuffer(mesh.vao_.id(), 1, instances_.id(), 0, GLsizei(stride));
-    program_.set("u_base_color", part.base_color);
-    program_.set("u_has_texture", part.texture >= 0 ? 1 : 0);
-    if (part.texture >= 0) glBindTextureUnit(unit(TextureUnit::kEntityBaseColor), mesh.textures_[std::size_t(part.texture)].id());
-    program_.set("u_alpha_cutoff", part.alpha_cutoff);
-    program_.set("u_unlit", part.unlit ? 1 : 0);
-    if (part.double_sided) glDisable(GL_CULL_FACE);
-    else glEnable(GL_CULL_FACE);
-    glDrawElementsInstancedBaseVertex(GL_TRIANGLES, part.index_count, GL_UNSIGNED_INT,
-                                      reinterpret_cast<const void*>(part.first_index * sizeof(std::uint32_t)),
-                                      GLsizei(count), part.base_vertex);
-    count_draw();
-  }
+void EntityPass::draw_part(const PartDraw& d) {
+  const EntityMesh& mesh = *d.mesh;
+  const EntityMesh::Part& part = *d.part;
+  glBindVertexArray(mesh.vao_.id());
+  glVertexArrayVertexBuffer(mesh.vao_.id(), 1, instances_.id(), GLintptr(d.first_record * sizeof(InstanceRecord)),
+                            GLsizei(sizeof(InstanceRecord)));
+  program_.set("u_base_color", part.base_color);
+  program_.set("u_has_texture", part.texture >= 0 ? 1 : 0);
+  if (part.texture >= 0)
+    glBindTextureUnit(unit(TextureUnit::kEntityBaseColor), mesh.textures_[std::size_t(part.texture)].id());
+  program_.set("u_alpha_cutoff", part.alpha_cutoff);
+  program_.set("u_unlit", part.unlit ? 1 : 0);
+  if (part.double_sided) glDisable(GL_CULL_FACE);
+  else glEnable(GL_CULL_FACE);
+  glDrawElementsInstancedBaseVertex(GL_TRIANGLES, part.index_count, GL_UNSIGNED_INT,
+                                    reinterpret_cast<const void*>(part.first_index * sizeof(std::uint32_t)),
+                                    GLsizei(d.count), part.base_vertex);
+  count_draw();
 }
 
 void EntityPass::draw(const RenderTarget& target, const std::vector<Batch>& batches, const EntityLighting& light,
                       PassRecorder& recorder) {
   if (batches.empty()) return;
+  // Every part's instance records (its node's matrix, the alpha) in one
+  // buffer, uploaded once; opaque parts drawn first, translucent ones after.
+  std::vector<InstanceRecord> records;
+  std::vector<PartDraw> opaque, translucent;
+  for (const Batch& b : batches) {
+    for (const auto& part : b.mesh->parts_) {
+      const PartDraw d{b.mesh, &part, records.size(), b.instances->size()};
+      for (const auto& inst : *b.instances)
+        records.push_back({inst.node_to_eye[std::size_t(part.node)], glm::vec4(inst.alpha, 0.0f, 0.0f, 0.0f)});
+      (part.blend ? translucent : opaque).push_back(d);
+    }
+  }
+  const std::size_t bytes = records.size() * sizeof(InstanceRecord);
+  if (bytes > capacity_) {
+    capacity_ = std::max(bytes, 2 * capacity_);
+    glNamedBufferData(instances_.id(), GLsizeiptr(capacity_), nullptr, GL_STREAM_DRAW);
+  }
+  glNamedBufferSubData(instances_.id(), 0, GLsizeiptr(bytes), records.data());
+  count_upload(bytes);
+
   target.bind_color_only();
   recorder.begin("entities");
   use_frame_depth_test();
-  GLboolean culled = glIsEnabled(GL_CULL_FACE);
+  const GLboolean culled = glIsEnabled(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glFrontFace(GL_CCW);
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);  // alpha keeps the terrain's coverage code
@@ -157,18 +164,12 @@ void EntityPass::draw(const RenderTarget& target, const std::vector<Batch>& batc
   program_.set("u_fog_color", light.fog_color);
   program_.set("u_fog_k", light.fog_k);
   program_.set("u_base_texture", unit(TextureUnit::kEntityBaseColor));
-  for (const Batch& b : batches) {
-    glBindVertexArray(b.mesh->vao_.id());
-    draw_parts(b, false);
-  }
+  for (const PartDraw& d : opaque) draw_part(d);
   // Translucent parts over everything opaque, without writing depth.
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthMask(GL_FALSE);
-  for (const Batch& b : batches) {
-    glBindVertexArray(b.mesh->vao_.id());
-    draw_parts(b, true);
-  }
+  for (const PartDraw& d : translucent) draw_part(d);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
   glBindVertexArray(0);

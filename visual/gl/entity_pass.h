@@ -84,7 +84,14 @@ class EntityPass {
             PassRecorder& recorder);
 
  private:
-  void draw_parts(const Batch& b, bool translucent);
+  // One mesh part for `count` instances whose records start at `first_record`.
+  struct PartDraw {
+    const EntityMesh* mesh;
+    const EntityMesh::Part* part;
+    std::size_t first_record;
+    std::size_t count;
+  };
+  void draw_part(const PartDraw& d);
   ShaderProgram program_;
   Buffer instances_;          // grown as needed
   std::size_t capacity_ = 0;  // bytes

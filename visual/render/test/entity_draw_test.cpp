@@ -94,7 +94,7 @@ void check_entity(const std::string& method, const std::string& aa, double along
   s.render.antialiasing = aa;
   ScenarioRunner runner(s, headless_run(w, h, method));
   const Frame bare = draw(runner, {});
-  EXPECT_EQ(bare.view.passes.back().name, "aa");  // no entity pass in a frame without entities
+  for (const auto& p : bare.view.passes) EXPECT_NE(p.name, "entities");  // none in a run without entities
   const glm::dvec3 ground = ground_ahead(runner, along_m);
   const auto& cam = runner.channels().front().camera;
   const double distance = glm::length(ground - cam.position);
