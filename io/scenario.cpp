@@ -159,11 +159,12 @@ RenderSpec parse_render(const json& j, const Context& ctx) {
   return r;
 }
 
-// environment: the scene's date and time (the sun follows them).
+// environment: the scene's date and time (the sun follows them) and its clouds.
 void parse_environment(const json& j, options::ShadingOptions& shading) {
   const std::string path = "environment";
   require_object(j, path);
-  check_keys(j, path, {"time_utc"});
+  check_keys(j, path, {"time_utc", "clouds"});
+  if (j.contains("clouds")) shading.clouds = parse_clouds(j["clouds"], child(path, "clouds"));
   if (j.contains("time_utc")) {
     const std::string p = child(path, "time_utc");
     std::string why;

@@ -86,6 +86,9 @@ PathSpec parse_path(const json& j, const std::string& path = "path");
 // "entities": scripted entities, each on a path like the ownship's (scenario_entities.cpp).
 std::vector<EntitySpec> parse_entities(const json& j);
 
+// environment.clouds: the cloud layers (scenario_clouds.cpp).
+options::CloudLayers parse_clouds(const json& j, const std::string& path);
+
 // render.twolevel and the baselines' sections of `render` into r
 // (scenario_methods.cpp).
 void parse_method_options(const json& render, const std::string& path, RenderSpec& r);

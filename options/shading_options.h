@@ -1,14 +1,18 @@
 #pragma once
 // How the terrain and the sky are shaded, one struct for every place that
 // sets it: the scenario file (render.sun_direction, sky_zenith_rgb,
-// sky_horizon_rgb, fog_visibility_m and environment.time_utc;
+// sky_horizon_rgb, fog_visibility_m, environment.time_utc and
+// environment.clouds;
 // io/scenario.cpp), Modbus (the fog register) and the renderer
 // (render::TerrainScene, the sky pass, the per-frame sun of
 // session::ScenarioRunner).
 
 #include <optional>
+#include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "options/cloud_options.h"
 
 namespace ig::options {
 
@@ -45,6 +49,9 @@ struct ShadingOptions {
   // pass shades every covered pixel once (shaders/shade_deferred.frag). The
   // picture is the same; only single-sampled frames (fxaa, off) can.
   bool deferred_shading = true;
+  // Cloud layers (environment.clouds; a CIGI host's Weather Control
+  // replaces them): none by default, and then nothing of the clouds is made.
+  CloudLayers clouds;
 };
 
 }  // namespace ig::options

@@ -270,6 +270,7 @@ std::vector<stats::Cell> frame_log_row(const FrameResult& f, const ChannelView& 
       {"lod_ms", ch.last.timings.lod_ms},
       {"terrain_ms", ch.last.timings.terrain_ms},
       {"sky_ms", ch.last.timings.sky_ms},
+      {"clouds_ms", ch.last.timings.clouds_ms},
       {"resolve_ms", ch.last.timings.resolve_ms},
       {"readback_ms", readback_ms},
       {"present_ms", present_ms},

@@ -1,5 +1,5 @@
 // The scenario's environment section: environment.time_utc (ISO 8601 UTC)
-// and how it sits beside render.sun_direction.
+// and how it sits beside render.sun_direction; environment.clouds.
 #include <string>
 #include <vector>
 
@@ -80,6 +80,62 @@ TEST(EnvironmentScenario, BadTimesNameTheKeyAndTheReason) {
       {R"({"time_utc": 1750000000})", {"environment.time_utc", "must be a string"}},
       {R"({"time": "2026-06-21T14:30:00Z"})", {"environment.time", "unknown key", "time_utc"}},
       {R"("2026-06-21T14:30:00Z")", {"environment", "must be an object"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.environment);
+    const std::string msg = scenario_error_of(with_environment(c.environment));
+    for (const std::string& want : c.expect)
+      EXPECT_NE(msg.find(want), std::string::npos) << "message: " << msg << "\nwanted: " << want;
+  }
+}
+
+TEST(EnvironmentScenario, CloudLayersAreRead) {
+  const Scenario s = parse_scenario(with_environment(R"({"clouds": [
+      {"type": "stratus", "coverage_pct": 100, "base_m": 1500, "thickness_m": 300, "transition_m": 40,
+       "visibility_m": 80},
+      {"type": "cumulus", "coverage_pct": 25, "base_m": 2500, "wind_mps": 10, "wind_from_deg": 270,
+       "scud_pct": 20}]})"));
+  const auto& c = s.render.shading.clouds;
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].type, ig::options::CloudType::Stratus);
+  EXPECT_EQ(c[0].id, 1);
+  EXPECT_DOUBLE_EQ(c[0].coverage, 1.0);
+  EXPECT_DOUBLE_EQ(c[0].base_m, 1500.0);
+  EXPECT_DOUBLE_EQ(c[0].thickness_m, 300.0);
+  EXPECT_DOUBLE_EQ(c[0].transition_m, 40.0);
+  EXPECT_DOUBLE_EQ(c[0].visibility_m, 80.0);
+  EXPECT_EQ(c[1].type, ig::options::CloudType::Cumulus);
+  EXPECT_EQ(c[1].id, 2);
+  EXPECT_DOUBLE_EQ(c[1].coverage, 0.25);
+  EXPECT_DOUBLE_EQ(c[1].scud, 0.2);
+  EXPECT_DOUBLE_EQ(c[1].visibility_m, 0.0);  // the type's, when drawn
+  // From the west: drifting east.
+  EXPECT_NEAR(c[1].wind_mps.x, 10.0, 1e-9);
+  EXPECT_NEAR(c[1].wind_mps.y, 0.0, 1e-9);
+  EXPECT_TRUE(parse_scenario(with_environment(R"({"clouds": []})")).render.shading.clouds.empty());
+}
+
+TEST(EnvironmentScenario, BadCloudLayersNameTheKeyAndTheReason) {
+  struct Case {
+    std::string environment;
+    std::vector<std::string> expect;
+  };
+  const std::vector<Case> cases = {
+      {R"({"clouds": [{"type": "stratus", "coverage_pct": 150, "base_m": 1000}]})",
+       {"environment.clouds[0].coverage_pct", "150"}},
+      {R"({"clouds": [{"type": "stratus", "base_m": 1000, "thickness_m": -5}]})",
+       {"environment.clouds[0].thickness_m"}},
+      {R"({"clouds": [{"type": "stratus", "base_m": 200000}]})", {"environment.clouds[0].base_m"}},
+      {R"({"clouds": [{"type": "stratus", "base_m": 99900, "thickness_m": 500}]})",
+       {"environment.clouds[0].thickness_m", "above 100 km"}},
+      {R"({"clouds": [{"type": "fog", "base_m": 100}]})", {"environment.clouds[0].type", "unknown cloud type", "cumulus"}},
+      {R"({"clouds": [{"coverage_pct": 50, "base_m": 100}]})", {"environment.clouds[0].type", "missing"}},
+      {R"({"clouds": [{"type": "cirrus"}]})", {"environment.clouds[0].base_m", "missing"}},
+      {R"({"clouds": [{"type": "cirrus", "base_m": 9000, "colour": 1}]})", {"environment.clouds[0].colour", "unknown key"}},
+      {R"({"clouds": [{"type": "stratus", "base_m": 1}, {"type": "stratus", "base_m": 2}, {"type": "stratus", "base_m": 3},
+                      {"type": "stratus", "base_m": 4}, {"type": "stratus", "base_m": 5}]})",
+       {"environment.clouds", "at most 4"}},
+      {R"({"clouds": {"type": "stratus"}})", {"environment.clouds", "must be an array"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.environment);

@@ -91,6 +91,7 @@ void VariantRun::render_and_compare(int pos) {
                                         {"lod_ms", vr.timings.lod_ms},
                                         {"terrain_ms", vr.timings.terrain_ms},
                                         {"sky_ms", vr.timings.sky_ms},
+                                        {"clouds_ms", vr.timings.clouds_ms},
                                         {"triangles", vr.method.triangles},
                                         {"hidden_boxes", hidden_.back()}};
   session::append_work_columns(frame_row, vr, /*per_pass=*/false);

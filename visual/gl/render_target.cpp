@@ -116,6 +116,17 @@ void RenderTarget::bind_output_with_mask() const {
   glViewport(0, 0, width_, height_);
 }
 
+void RenderTarget::bind_color_without_depth() const {
+  if (!no_depth_fbo_) {
+    no_depth_fbo_ = create_framebuffer();
+    const GLuint colour = post_pass() ? draw_color_.id() : color_.id();
+    glNamedFramebufferTexture(no_depth_fbo_.id(), GL_COLOR_ATTACHMENT0, colour, 0);
+    check_complete(no_depth_fbo_.id(), width_, height_, 1);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, no_depth_fbo_.id());
+  glViewport(0, 0, width_, height_);
+}
+
 void RenderTarget::use_water_marks() const {
   if (!water_marks_) {
     if (samples_ > 1) throw GlError("water marks need a single-sampled frame");

@@ -81,6 +81,11 @@ class RenderTarget {
   // output, for the pass that reads the surface targets.
   void bind_color_only() const;
 
+  // The colour the passes drew (multisampled: the resolved picture) with no
+  // depth attached, so a pass can read depth_texture() while it blends over
+  // the frame (the clouds). Made on first use.
+  void bind_color_without_depth() const;
+
   // Read back (after resolve()), top row first (image order). RGBA8 and float depth.
   std::vector<std::uint8_t> read_rgba() const;
   std::vector<float> read_depth() const;
@@ -101,6 +106,7 @@ class RenderTarget {
   mutable Texture output_mask_;
   mutable Texture water_marks_;
   mutable Framebuffer water_fbo_;
+  mutable Framebuffer no_depth_fbo_;
   mutable Texture water_mask_;
 };
 

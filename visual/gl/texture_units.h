@@ -23,6 +23,8 @@ enum class TextureUnit : int {
   kWaterMarks = 14,     // deferred shading's marks of where water may be (the water pass's mask)
   kWaterPresence = 15,  // where water may be, coarsely (scenes with water)
   kEntityBaseColor = 16,  // an entity model's base colour texture (scenes with entities)
+  kFrameDepth = 17,     // a full-screen pass's view of the frame's depth (the clouds)
+  kCloudNoise = 18,     // the field the cloud layers are cut from (scenes with clouds)
 };
 
 constexpr int unit(TextureUnit u) { return static_cast<int>(u); }

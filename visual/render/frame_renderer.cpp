@@ -10,13 +10,14 @@ using Clock = stats::WallClock;
 using stats::ms_since;
 // The work counters' passes: the method's, deferred shading's, its water
 // pass (scenes with water only), the sky and the anti-aliasing post pass (0
-// where the frame has none).
+// where the frame has none); the clouds after the sky in a scene with them.
 std::vector<std::string> pass_names_of(const TerrainMethod& method, const TerrainScene& scene, bool entities) {
   auto names = method.pass_names();
   names.push_back("shade");
   if (scene.has_water()) names.push_back("water");
   if (entities) names.push_back("entities");
   names.push_back("sky");
+  if (!scene.clouds().empty()) names.push_back("clouds");
   names.push_back("aa");
   return names;
 }
@@ -72,8 +73,28 @@ void FrameRenderer::set_method(TerrainMethod& method) {
 
 void FrameRenderer::set_entities(EntityRenderer* entities) {
   entities_ = entities;
+  update_pass_names();
+}
+
+void FrameRenderer::update_pass_names() {
   if (auto names = pass_names_of(*method_, scene_, entities_ != nullptr); names != recorder_.pass_names())
     recorder_.reset_passes(std::move(names));
+}
+
+void FrameRenderer::draw_clouds(const Camera& camera, const gl::RenderTarget& target, ViewResult& r) {
+  const auto t0 = Clock::now();
+  if (!clouds_) clouds_ = std::make_unique<gl::CloudPass>(shader_dir_);
+  gl::CloudView view;
+  view.inv_view_proj = glm::inverse(camera.view_projection());
+  view.eye_altitude_m = float(camera.position.z);
+  view.earth_radius_m = camera.earth_radius_m;
+  view.fov_y_deg = camera.fov_y_deg;
+  view.fog_k = float(scene_.fog_k());
+  view.fog_colour = scene_.sky_light().sky_horizon;
+  const auto frame = environment::cloud_frame(scene_.clouds(), camera.position, scene_.time_s(), scene_.sky_light());
+  clouds_->draw(frame, view, target, recorder_);
+  gl::finish();
+  r.timings.clouds_ms = ms_since(t0);
 }
 
 ViewSelection FrameRenderer::select(const Camera& world_camera, const gl::RenderTarget& target) {
@@ -82,6 +103,7 @@ ViewSelection FrameRenderer::select(const Camera& world_camera, const gl::Render
   // Methods work in terrain-local metres (world origin subtracted in double)
   // and see the scene's Earth curvature through the camera.
   s.camera = scene_.local_camera(world_camera);
+  update_pass_names();  // the clouds come and go with the host's weather
   recorder_.begin_frame();
   s.work_at_start = gl::work_tally();
   method_->set_viewport(target.width(), target.height());
@@ -125,12 +147,19 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   sky_.draw(glm::inverse(camera.view_projection()), scene_.sky_light(), recorder_);
   gl::finish();
   r.timings.sky_ms = ms_since(t0);
-  if (target.samples() > 1 || target.post_pass()) {
+  // The clouds blend over the single-sampled picture: a multisampled frame's
+  // after its resolve, a post-filtered one's before its filter.
+  const bool clouds = !scene_.clouds().empty();
+  if (target.samples() > 1) {
     t0 = Clock::now();
-    if (target.post_pass())
-      post_filter_.run(target, recorder_);
-    else
-      target.resolve();
+    target.resolve();
+    gl::finish();
+    r.timings.resolve_ms = ms_since(t0);
+  }
+  if (clouds) draw_clouds(camera, target, r);
+  if (target.post_pass()) {
+    t0 = Clock::now();
+    post_filter_.run(target, recorder_);
     gl::finish();
     r.timings.resolve_ms = ms_since(t0);
   }
@@ -149,6 +178,7 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   if (deferred_ && drew_terrain) r.method.passes += water_ ? "shade+water+" : "shade+";
   if (r.entities.in_view > 0) r.method.passes += "entities+";
   r.method.passes += "sky";
+  if (clouds) r.method.passes += "+clouds";
   if (target.post_pass()) r.method.passes += "+aa";
   return r;
 }

@@ -3,7 +3,7 @@
 // and returns what it asks of the scene (prefetches, the height window's
 // move); the scene's owner carries that out (session/view_step.h) and then
 // draw() runs the method's terrain passes, the sky into whatever the terrain
-// left uncovered, and the anti-aliasing resolve (multisampled) or post pass
+// left uncovered, the cloud layers over both (scenes with clouds), and the anti-aliasing resolve (multisampled) or post pass
 // (post-filtered). With deferred shading the terrain passes store each
 // pixel's surface and one pass shades them after the method's passes, and in
 // a scene with water one more blends the water over them (both part of the
@@ -13,6 +13,7 @@
 #include <chrono>
 #include <memory>
 
+#include "gl/cloud_pass.h"
 #include "gl/deferred_shade_pass.h"
 #include "gl/post_filter_pass.h"
 #include "gl/render_target.h"
@@ -30,6 +31,7 @@ struct ViewTimings {
   double lod_ms = 0.0;
   double terrain_ms = 0.0;
   double sky_ms = 0.0;
+  double clouds_ms = 0.0;   // the cloud layers (0 in a scene without clouds)
   double resolve_ms = 0.0;  // anti-aliasing: averaging the samples, or the edge filter (0 otherwise)
 };
 
@@ -100,6 +102,10 @@ class FrameRenderer {
   gl::ShaderProgram water_mask_program_, water_shade_program_;
   std::vector<std::string> water_stages_;  // what the two programs were linked from
   void take_shading_settings();
+  // Made for the first frame with clouds: until then nothing of them exists.
+  std::unique_ptr<gl::CloudPass> clouds_;
+  void draw_clouds(const Camera& camera, const gl::RenderTarget& target, ViewResult& r);
+  void update_pass_names();
   gl::PostFilterPass post_filter_;  // for post-filtered targets (gl::RenderTarget::post_pass)
   gl::PassRecorder recorder_;
   EntityRenderer* entities_ = nullptr;

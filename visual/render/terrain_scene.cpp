@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "environment/cloud_layers.h"
 #include "gl/coverage_codes.h"
 #include "gl/gl_context.h"
 #include "gl/frame_state.h"
@@ -54,6 +55,8 @@ TerrainScene::TerrainScene(const terrain::Heightfield& hf, const ShadingParams& 
                                 " samples: a terrain needs at least 2 x 2 samples to form a surface");
   const int max_size = gl::max_texture_size();
   set_sun_direction(shading_.sun_direction.value_or(ShadingParams::kDefaultSunDirection));
+  if (const auto refused = set_clouds(shading.clouds); !refused.empty())
+    throw std::invalid_argument("environment.clouds: " + refused.front());
 
   const auto t0 = std::chrono::steady_clock::now();
   const int limit = texture_limit > 0 ? std::min(texture_limit, int(max_size)) : int(max_size);
@@ -372,6 +375,20 @@ long long TerrainScene::follow_window(int set, glm::ivec2 centre) {
   const Windows& w = windows_[set];
   if (w.imagery) w.imagery->centre_on_sample(centre, wait_for_pages_);  // live: held until its tiles are in
   return w.height ? w.height->centre_on(centre) : 0;
+}
+
+std::vector<std::string> TerrainScene::set_clouds(const options::CloudLayers& layers) {
+  std::vector<std::string> refused;
+  options::CloudLayers kept;
+  for (const auto& l : layers) {
+    auto check = environment::check_cloud_layer(l, heightfield_.min_m);
+    if (check.layer && int(kept.size()) == environment::kMaxCloudLayers)
+      check = {std::nullopt, "more than " + std::to_string(environment::kMaxCloudLayers) + " cloud layers"};
+    if (check.layer) kept.push_back(*check.layer);
+    else refused.push_back("cloud layer " + std::to_string(l.id) + ": " + check.refused);
+  }
+  shading_.clouds = std::move(kept);
+  return refused;
 }
 
 }  // namespace ig::render

@@ -137,6 +137,14 @@ class TerrainScene {
   // The scene's clock (sim time, seconds): the waves drift with it. Used
   // from the next bind_common.
   void set_time(double sim_time_s) { time_s_ = sim_time_s; }
+  double time_s() const { return time_s_; }
+  // The cloud layers drawn from the next frame (docs/rendering.md,
+  // "Clouds"), each checked by environment::check_cloud_layer against the
+  // terrain's lowest height; returns why each refused one was refused
+  // ("cloud layer 2: negative thickness"). The constructor takes
+  // shading.clouds the same way and throws std::invalid_argument on a refusal.
+  std::vector<std::string> set_clouds(const options::CloudLayers& layers);
+  const options::CloudLayers& clouds() const { return shading_.clouds; }
   // Imagery finer than the texture limit: the imagery texture is its
   // overview and this window holds full resolution around the point
   // follow_window() is given; null otherwise. Only methods that
