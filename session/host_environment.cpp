@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <variant>
+
+#include "environment/cloud_layers.h"
 
 namespace ig::session {
 
@@ -82,11 +85,7 @@ void HostEnvironment::take(const CigiHostPackets& p) {
     atmosphere_ = p.atmosphere.back();
     atmosphere_visibility_m_ = atmosphere_->visibility_m;
   }
-  for (const auto& w : p.weather) {
-    if (w.scope != 0) continue;  // regional and entity weather: counted only
-    if (w.enabled) layers_[w.layer] = w;
-    else layers_.erase(w.layer);
-  }
+  for (const auto& w : p.weather) take_weather(w);
   counters_.packets["atmosphere_controls"] += p.atmosphere.size();
   counters_.packets["weather_controls"] += p.weather.size();
   counters_.packets["rate_controls"] += p.rates.size();  // applied by the pose intake (io/pose_intake.h)
@@ -108,6 +107,47 @@ void HostEnvironment::take(const CigiHostPackets& p) {
   }
   counters_.packets["conditions_requests"] += p.conditions.size();
   conditions_.insert(conditions_.end(), p.conditions.begin(), p.conditions.end());
+}
+
+void HostEnvironment::take_weather(const CigiWeatherControl& w) {
+  if (w.scope != 0) return;  // regional and entity weather: counted only
+  const bool had_cloud = clouds_.erase(w.layer) > 0;
+  clouds_changed_ = clouds_changed_ || had_cloud;
+  layers_.erase(w.layer);
+  if (!w.enabled) return;
+  const auto type = options::cloud_type_of_cigi(w.cloud_type);
+  if (!type) {
+    if (w.cloud_type != 0) refuse("weather-cloud-type", "Weather Control layer " + std::to_string(w.layer) +
+                                                            ": cloud type " + std::to_string(w.cloud_type) +
+                                                            " (other) is not drawn");
+    layers_[w.layer] = w;  // weather without cloud: its visibility only
+    return;
+  }
+  options::CloudLayer l;
+  l.id = w.layer;
+  l.type = *type;
+  l.coverage = w.coverage_pct / 100.0;
+  l.base_m = w.base_m;
+  l.thickness_m = w.thickness_m;
+  l.transition_m = w.transition_band_m;
+  l.visibility_m = w.visibility_m;
+  l.scud = w.scud ? w.scud_frequency_pct / 100.0 : 0.0;
+  // The wind blows from wind_direction_deg (clockwise from north).
+  const double to = (double(w.wind_direction_deg) + 180.0) * 3.14159265358979323846 / 180.0;
+  l.wind_mps = double(w.horizontal_wind_mps) * glm::dvec2(std::sin(to), std::cos(to));
+  // Terrain-independent checks here, per packet; the scene checks the rest.
+  const auto check = environment::check_cloud_layer(l, -std::numeric_limits<double>::infinity());
+  if (!check.layer) {
+    refuse("weather-cloud-layer", "Weather Control layer " + std::to_string(w.layer) + ": " + check.refused);
+    return;
+  }
+  clouds_[w.layer] = *check.layer;
+  clouds_changed_ = true;
+}
+
+void HostEnvironment::refuse(const std::string& reason, const std::string& text) {
+  ++counters_.rejected[reason];
+  message(text);
 }
 
 HostEnvironment::Changes HostEnvironment::changes(double eye_altitude_m,
@@ -135,6 +175,12 @@ HostEnvironment::Changes HostEnvironment::changes(double eye_altitude_m,
       layer = std::min(layer.value_or(w.visibility_m), double(w.visibility_m));
   const double v = layer.value_or(atmosphere_visibility_m_.value_or(own_visibility_m_));
   if (v != visibility_in_force_m_) c.visibility_m = visibility_in_force_m_ = v;
+  if (clouds_changed_) {
+    options::CloudLayers layers;
+    for (const auto& [id, l] : clouds_) layers.push_back(l);
+    c.clouds = std::move(layers);
+    clouds_changed_ = false;
+  }
   return c;
 }
 

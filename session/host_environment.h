@@ -6,6 +6,8 @@
 // by opcode, each kind answered once with an IG Message). No sockets and no
 // GL: the live loop hands in the host's datagrams, applies changes() at the
 // frame boundary and appends append_frame_packets() to the frame's datagram.
+// Weather Control's cloud layers become options::CloudLayers (docs/protocol.md):
+// a layer whose fields are out of range is refused and counted, not drawn.
 
 #include <cstdint>
 #include <functional>
@@ -20,6 +22,7 @@
 
 #include "io/pose.h"
 #include "io/wire/cigi_environment.h"
+#include "options/cloud_options.h"
 #include "options/shading_options.h"
 #include "session/host_services.h"
 
@@ -43,10 +46,15 @@ class HostEnvironment {
     std::optional<options::UtcDateTime> time_utc;
     bool clock_runs = true;
     // The visibility in force at the eye, when it changed: the lowest of the
-    // global weather layers (Weather Control, scope global, enabled) whose
+    // global weather layers without cloud (Weather Control, scope global,
+    // enabled; a cloud layer's visibility is drawn inside it) whose
     // altitude band holds the eye, else Atmosphere Control's global
     // visibility, else the IG's own.
     std::optional<double> visibility_m;
+    // The cloud layers, when they changed: every global Weather Control layer
+    // with a cloud type, by layer id (the scene checks each against the
+    // terrain and its limit of layers: TerrainScene::set_clouds).
+    std::optional<options::CloudLayers> clouds;
   };
   // `eye_altitude_m`: the ownship's, in the terrain's heights; `today`: the
   // date to use where the host's date is not valid (asked only then).
@@ -64,6 +72,10 @@ class HostEnvironment {
   // are known.
   using EntityLookup = std::function<std::optional<io::Pose>(std::uint16_t id, std::optional<std::uint8_t> part)>;
   void set_entity_lookup(EntityLookup lookup) { entity_lookup_ = std::move(lookup); }
+
+  // A refusal found where the host's packets are applied (the scene's
+  // cloud checks): counted under `reason` and sent once as an IG Message.
+  void refuse(const std::string& reason, const std::string& text);
 
   // The IG's own notices to the host (a refused database load, an opcode
   // not supported, ...): each text sent once, with the next frame.
@@ -94,7 +106,10 @@ class HostEnvironment {
   std::optional<io::wire::CigiCelestialSphere> celestial_;  // not yet applied
   std::optional<double> atmosphere_visibility_m_;
   std::optional<io::wire::CigiAtmosphere> atmosphere_;  // the last Atmosphere Control, echoed by Weather Conditions
-  std::map<int, io::wire::CigiWeatherControl> layers_;      // global weather layers, by layer id
+  std::map<int, io::wire::CigiWeatherControl> layers_;      // global weather layers without cloud, by layer id
+  std::map<int, options::CloudLayer> clouds_;               // the cloud layers among them, as checked
+  bool clouds_changed_ = false;
+  void take_weather(const io::wire::CigiWeatherControl& w);
   double own_visibility_m_;
   double visibility_in_force_m_;
   std::vector<io::wire::CigiPositionRequest> one_shot_;

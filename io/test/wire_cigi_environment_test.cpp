@@ -110,7 +110,8 @@ TEST(CigiEnvironment, EveryPacketRoundTripsInBothOrders) {
     const CigiRateControl rc{0, 0, false, true, {50, 1, -2}, {3, 0.5, -10}};
     const CigiCelestialSphere cs{6, 5, true, true, false, false, true, 12, 31, 2099, 40.0f};
     const CigiAtmosphere at{true, 80, -5.0f, 1234.5f, 7.0f, 0.5f, 90.0f, 990.0f};
-    const CigiWeatherControl wc{4, 2, 70, 3, 0, 2, true, 10.0f, 800.0f, 50.0f, 1500.0f, 300.0f};
+    const CigiWeatherControl wc{4,      2,      70,      3,     0,     2,     true,  true,  10.0f,
+                                800.0f, 20.0f,  50.0f,  1500.0f, 300.0f, 75.0f, 12.0f, -1.0f, 270.0f};
     const CigiCollisionSegment sg{0, 4, true, {1, 2, 3}, {4, 5, 600}, 0xF0};
     const CigiPositionRequest pr{{0, 0, kCigiObjectEntity, 0}, true};
     const CigiEnvironmentRequest er{kCigiConditionsWeather, 9, {36.5, -118.25, 3000.0}};

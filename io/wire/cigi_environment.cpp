@@ -127,12 +127,13 @@ Decoded take_weather(const std::uint8_t* p, Order o, CigiHostPackets& out) {
   w.cloud_type = p[6] >> 4;
   w.scope = p[7] & 0x3u;
   w.severity = (p[7] >> 2) & 0x7u;
-  w.air_temp_c = bytes::load_f32(p + 8, o);
-  w.visibility_m = bytes::load_f32(p + 12, o);
-  w.coverage_pct = bytes::load_f32(p + 20, o);
-  w.base_m = bytes::load_f32(p + 24, o);
-  w.thickness_m = bytes::load_f32(p + 28, o);
-  if (!finite({w.air_temp_c, w.visibility_m, w.coverage_pct, w.base_m, w.thickness_m})) return QueryReject::NonFinite;
+  w.scud = p[6] & 2u;
+  load_f32s(p + 8, o, {&w.air_temp_c, &w.visibility_m, &w.scud_frequency_pct, &w.coverage_pct, &w.base_m,
+                       &w.thickness_m, &w.transition_band_m, &w.horizontal_wind_mps, &w.vertical_wind_mps,
+                       &w.wind_direction_deg});
+  if (!finite({w.air_temp_c, w.visibility_m, w.scud_frequency_pct, w.coverage_pct, w.base_m, w.thickness_m,
+               w.transition_band_m, w.horizontal_wind_mps, w.vertical_wind_mps, w.wind_direction_deg}))
+    return QueryReject::NonFinite;
   if (w.visibility_m < 0 || w.visibility_m > kMaxVisibilityM || w.scope == 3) return QueryReject::OutOfRange;
   out.weather.push_back(w);
   return std::nullopt;
@@ -256,10 +257,11 @@ std::array<std::uint8_t, kCigiWeatherControlSize> encode_cigi_weather(const Cigi
   bytes::store_u16(b.data() + 2, w.id, o);
   b[4] = w.layer;
   b[5] = w.humidity_pct;
-  b[6] = std::uint8_t(bit(w.enabled, 0) | (w.cloud_type << 4));
+  b[6] = std::uint8_t(bit(w.enabled, 0) | bit(w.scud, 1) | (w.cloud_type << 4));
   b[7] = std::uint8_t((w.scope & 0x3u) | ((w.severity & 0x7u) << 2));
-  store_f32s(b.data() + 8, o, {w.air_temp_c, w.visibility_m});
-  store_f32s(b.data() + 20, o, {w.coverage_pct, w.base_m, w.thickness_m});
+  store_f32s(b.data() + 8, o, {w.air_temp_c, w.visibility_m, w.scud_frequency_pct, w.coverage_pct, w.base_m,
+                               w.thickness_m, w.transition_band_m, w.horizontal_wind_mps, w.vertical_wind_mps,
+                               w.wind_direction_deg});
   return b;
 }
 

@@ -91,7 +91,9 @@ struct CigiWeatherControl {
   std::uint16_t id = 0;
   std::uint8_t layer = 0, humidity_pct = 0, cloud_type = 0, scope = 0, severity = 0;
   bool enabled = false;
-  float air_temp_c = 0, visibility_m = 0, coverage_pct = 0, base_m = 0, thickness_m = 0;
+  bool scud = false;
+  float air_temp_c = 0, visibility_m = 0, scud_frequency_pct = 0, coverage_pct = 0, base_m = 0, thickness_m = 0,
+        transition_band_m = 0, horizontal_wind_mps = 0, vertical_wind_mps = 0, wind_direction_deg = 0;
   bool operator==(const CigiWeatherControl&) const = default;
 };
 

@@ -45,7 +45,7 @@ std::string source_endpoint(const std::string& endpoint, const std::optional<std
   return *group + endpoint.substr(endpoint.rfind(':'));
 }
 
-// The host's time of day and visibility, from the frame about to render.
+// The host's time of day, visibility and clouds, from the frame about to render.
 void apply_host_environment(HostEnvironment& environment, ScenarioRunner& runner, double sim_time_s,
                             const io::Pose& pose) {
   const auto c =
@@ -53,6 +53,8 @@ void apply_host_environment(HostEnvironment& environment, ScenarioRunner& runner
   if (c.time_utc && !runner.set_time_of_day(*c.time_utc, sim_time_s, c.clock_runs))
     environment.message("Celestial Sphere Control: the terrain has no georeference to place the sun");
   if (c.visibility_m) runner.scene().set_fog_visibility(*c.visibility_m);
+  if (c.clouds)
+    for (const auto& why : runner.scene().set_clouds(*c.clouds)) environment.refuse("weather-cloud-layer", why);
 }
 
 // Each view's eye (index = channel = CIGI view id), for Position Responses.

@@ -1,4 +1,4 @@
-// HostEnvironment: the time of day and visibility a host sets, Position
+// HostEnvironment: the time of day, visibility and cloud layers a host sets, Position
 // Requests (one-shot, continuous, unknown objects), collision segments cast
 // against the terrain, unsupported opcodes answered once, and a reset.
 
@@ -177,6 +177,84 @@ TEST(HostEnvironment, WeatherConditionsEchoTheAtmosphere) {
   EXPECT_EQ(w.vertical_wind_mps, -1.5f);
   EXPECT_EQ(w.wind_direction_deg, 250.0f);
   EXPECT_EQ(w.pressure_hpa, 1002.5f);
+}
+
+CigiWeatherControl cloud_layer(std::uint8_t layer, std::uint8_t type, float coverage_pct, float base_m) {
+  CigiWeatherControl w;
+  w.layer = layer;
+  w.enabled = true;
+  w.cloud_type = type;
+  w.coverage_pct = coverage_pct;
+  w.base_m = base_m;
+  w.thickness_m = 300.0f;
+  return w;
+}
+
+TEST(HostEnvironment, WeatherControlCloudLayersBecomeTheScenesClouds) {
+  Fixture f;
+  const ig::options::UtcDateTime today;
+  CigiWeatherControl st = cloud_layer(1, 10, 100.0f, 1500.0f);  // stratus
+  st.visibility_m = 80.0f;
+  st.transition_band_m = 40.0f;
+  st.horizontal_wind_mps = 10.0f;
+  st.wind_direction_deg = 270.0f;  // from the west
+  st.scud = true;
+  st.scud_frequency_pct = 30.0f;
+  const CigiWeatherControl cu = cloud_layer(2, 7, 50.0f, 2500.0f);  // cumulus
+  f.send(kCigiModeOperate, encode_cigi_weather(st, false), encode_cigi_weather(cu, false));
+  // Inside the stratus layer: its visibility is drawn by the clouds, not the fog.
+  auto ch = f.env.changes(1600.0, [&] { return today; });
+  EXPECT_FALSE(ch.visibility_m);
+  ASSERT_TRUE(ch.clouds);
+  ASSERT_EQ(ch.clouds->size(), 2u);
+  const auto& a = (*ch.clouds)[0];
+  EXPECT_EQ(a.id, 1);
+  EXPECT_EQ(a.type, ig::options::CloudType::Stratus);
+  EXPECT_DOUBLE_EQ(a.coverage, 1.0);
+  EXPECT_DOUBLE_EQ(a.base_m, 1500.0);
+  EXPECT_DOUBLE_EQ(a.thickness_m, 300.0);
+  EXPECT_DOUBLE_EQ(a.transition_m, 40.0);
+  EXPECT_DOUBLE_EQ(a.visibility_m, 80.0);
+  EXPECT_NEAR(a.scud, 0.3, 1e-6);
+  EXPECT_NEAR(a.wind_mps.x, 10.0, 1e-5);  // drifting east
+  EXPECT_NEAR(a.wind_mps.y, 0.0, 1e-5);
+  EXPECT_EQ((*ch.clouds)[1].type, ig::options::CloudType::Cumulus);
+  EXPECT_DOUBLE_EQ((*ch.clouds)[1].coverage, 0.5);
+  EXPECT_FALSE(f.env.changes(1600.0, [&] { return today; }).clouds);  // applied once
+  st.enabled = false;  // the stratus removed
+  f.send(kCigiModeOperate, encode_cigi_weather(st, false));
+  ch = f.env.changes(1600.0, [&] { return today; });
+  ASSERT_TRUE(ch.clouds);
+  ASSERT_EQ(ch.clouds->size(), 1u);
+  EXPECT_EQ(ch.clouds->front().id, 2);
+}
+
+TEST(HostEnvironment, BadCloudLayersAreCountedAndRefused) {
+  Fixture f;
+  const ig::options::UtcDateTime today;
+  CigiWeatherControl negative = cloud_layer(2, 10, 50.0f, 1500.0f);
+  negative.thickness_m = -10.0f;
+  const CigiWeatherControl too_high = cloud_layer(3, 5, 50.0f, 200000.0f);
+  const CigiWeatherControl other = cloud_layer(4, 12, 50.0f, 1500.0f);  // 11-15: "other"
+  f.send(kCigiModeOperate, encode_cigi_weather(cloud_layer(1, 10, 150.0f, 1500.0f), false),
+         encode_cigi_weather(negative, false), encode_cigi_weather(too_high, false), encode_cigi_weather(other, false),
+         encode_cigi_weather(cloud_layer(5, 7, 25.0f, 2000.0f), false));
+  const auto ch = f.env.changes(900.0, [&] { return today; });
+  ASSERT_TRUE(ch.clouds);
+  ASSERT_EQ(ch.clouds->size(), 1u);  // only the good cumulus
+  EXPECT_EQ(ch.clouds->front().id, 5);
+  const auto summary = f.env.summary();
+  EXPECT_EQ(summary["rejected"]["weather-cloud-layer"], 3);
+  EXPECT_EQ(summary["rejected"]["weather-cloud-type"], 1);
+  std::string texts;
+  for (const auto& m : f.frame().messages) texts += m.text + "\n";
+  EXPECT_NE(texts.find("layer 1: coverage outside 0-100 %"), std::string::npos) << texts;
+  EXPECT_NE(texts.find("layer 2: negative thickness"), std::string::npos) << texts;
+  EXPECT_NE(texts.find("layer 3: top above 100 km"), std::string::npos) << texts;
+  EXPECT_NE(texts.find("cloud type 12 (other) is not drawn"), std::string::npos) << texts;
+  // The scene's own refusals are counted with the host's.
+  f.env.refuse("weather-cloud-layer", "cloud layer 9: more than 4 cloud layers");
+  EXPECT_EQ(f.env.summary()["rejected"]["weather-cloud-layer"], 4);
 }
 
 }  // namespace
