@@ -1,8 +1,10 @@
 #version 450 core
-// Cloud layers over the drawn frame (gl/cloud_pass.h): each pixel's view ray
-// is marched through every layer's slab up to the terrain the depth buffer
-// holds, and the clouds' light and the share of the frame behind them that
-// still shows are blended over it (blend ONE, SRC_ALPHA). A layer is cut
+// Cloud layers for the drawn frame (gl/cloud_pass.h), at half its
+// resolution: each pixel's view ray (through the top-left pixel of its 2 x 2
+// block of the frame) is marched through every layer's slab up to the
+// terrain the frame's depth buffer holds there, and the clouds' light and the
+// share of the frame behind them that still shows are written with that
+// depth; shaders/clouds_upsample.frag blends them over the frame. A layer is cut
 // from the ranked noise field (environment/cloud_noise.h) where it exceeds
 // 1 - coverage; stratiform decks are that deep everywhere they are cloud,
 // cumuliform heaps rise from a flat base higher towards their middles. The
@@ -10,12 +12,13 @@
 // follow the Earth's curvature as the terrain is drawn, and terrain
 // pixels under a cloud lose the sun's share of their light (its shadow).
 // Layer data: environment/cloud_frame.h.
-layout(location = 0) out vec4 o_color;
+layout(location = 0) out vec4 o_color;  // the clouds' light, the share of the frame that shows
+layout(location = 1) out float o_depth;  // the frame's depth the ray stopped at
 
 uniform sampler2D u_depth;
 uniform sampler2D u_noise;
 uniform mat4 u_inv_view_proj;   // clip -> eye-relative world (as drawn: curvature included)
-uniform vec2 u_viewport;
+uniform vec2 u_viewport;        // the frame's size (this target is half of it)
 uniform float u_eye_alt;        // the eye's height above sea level
 uniform float u_curve_k;        // 1 / (2 R), 0 for a flat world
 uniform float u_pixel_spread;   // metres of footprint per metre of distance, one pixel
@@ -64,8 +67,8 @@ float field(int i, vec2 xy, float footprint, out float blur) {
   vec4 e = u_layer[4 * i + 2];
   vec4 a = u_layer[4 * i + 3];
   vec2 uv = e.xy + mat2(a.xy, a.zw) * xy;
-  // Heaps without the finest octave: their tops are rounded, not combed.
-  float lod = max(log2(max(footprint, 1e-3) / s.w), s.y == 1.0 ? 1.0 : 0.0);
+  // Heaps without the two finest octaves: their tops are domes, not spires.
+  float lod = max(log2(max(footprint, 1e-3) / s.w), s.y == 1.0 ? 2.0 : 0.0);
   blur = smoothstep(1.0, 5.0, lod);
   return textureLod(u_noise, uv, lod).r;
 }
@@ -81,16 +84,16 @@ float density(int i, float n, float blur, float alt, out float top_here) {
     cover = 1.0;
     top_here = top;
   } else if (s.y == 1.0) {
-    // A heap: as high as the field is above the cut, a rounded top.
+    // A heap: as high as the field is above the cut.
     float q = clamp((n - th) / max(1.0 - th, 1e-3), 0.0, 1.0);
-    top_here = base + (top - base) * sqrt(q);
+    top_here = base + (top - base) * (1.0 - (1.0 - q) * (1.0 - q));  // steep sides, a rounded top
     cover = smoothstep(0.0, 0.3, q);  // soft edges: a pixel's rays see them thin out
     cover = mix(cover, 1.0 - th, blur);
     top_here = mix(top_here, base + (top - base) * 0.6, blur);
     float soft_top = max(band, 0.2 * (top - base));
     return cover * smoothstep(base - band, base, alt) * (1.0 - smoothstep(top_here - soft_top, top_here, alt));
   } else {
-    cover = mix(smoothstep(th - 0.03, th + 0.03, n), 1.0 - th, blur);
+    cover = mix(smoothstep(th - 0.08, th + 0.08, n), 1.0 - th, blur);  // soft edges, wider than a pixel
     top_here = top;
   }
   float texture_var = mix(0.7 + 0.6 * n, 1.0, blur);  // the deck is not uniform
@@ -98,8 +101,8 @@ float density(int i, float n, float blur, float alt, out float top_here) {
 }
 
 void main() {
-  ivec2 px = ivec2(gl_FragCoord.xy);
-  vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
+  ivec2 px = min(ivec2(gl_FragCoord.xy) * 2, ivec2(u_viewport) - 1);
+  vec2 ndc = (vec2(px) + 0.5) / u_viewport * 2.0 - 1.0;
   float depth = texelFetch(u_depth, px, 0).r;
   vec4 far_p = u_inv_view_proj * vec4(ndc, 0.5, 1.0);
   vec3 dir = normalize(far_p.xyz / far_p.w);
@@ -111,7 +114,14 @@ void main() {
   float k2 = u_curve_k * max(1.0 - dir.z * dir.z, 0.0);
   float sun_z = max(u_sun.z, 0.05);
   float cos_sun = dot(dir, u_sun);
-  float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  // Where along its first step each ray starts: a hash of the pixel, so the
+  // steps leave fine grain rather than terraces or rings.
+  uvec2 hp = uvec2(gl_FragCoord.xy);
+  uint h = hp.x * 1664525u ^ hp.y * 1013904223u;
+  h ^= h >> 16;
+  h *= 0x7feb352du;
+  h ^= h >> 15;
+  float jitter = float(h & 0xffffu) / 65536.0;
   float phase = 0.7 + 0.9 * pow(max(cos_sun, 0.0), 6.0);  // brighter towards the sun (silver lining)
 
   // Each layer's stretches of the ray, nearest first.
@@ -223,4 +233,5 @@ void main() {
     shade = mix(1.0, mix(u_shadow_floor, 1.0, sun_through), 1.0 - fog_of(t_end));
   }
   o_color = vec4(light, through * shade);
+  o_depth = depth;
 }

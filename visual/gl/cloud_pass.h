@@ -1,13 +1,17 @@
 #pragma once
-// The cloud layers (shaders/clouds.frag, environment/cloud_frame.h): one
-// full-screen triangle after the sky, blended over whatever the frame holds
-// (sky, terrain, water, entities), reading the frame's depth to stop each
-// ray at the terrain. Made only for a frame that has clouds: a scene
-// without them links no cloud shader and allocates no noise texture.
+// The cloud layers (shaders/clouds.frag, environment/cloud_frame.h), after
+// the sky, over whatever the frame holds (sky, terrain, water, entities):
+// marched at half the frame's resolution into a target of the pass's own,
+// reading the frame's depth to stop each ray at the terrain, then blended
+// over the frame by a depth-aware upsample (shaders/clouds_upsample.frag).
+// The march is the cost, so a quarter of the pixels march. Made only for a
+// frame that has clouds: a scene without them links no cloud shader and
+// allocates no texture.
 
 #include <string>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 
 #include "environment/cloud_frame.h"
 #include "gl/gl_objects.h"
@@ -32,12 +36,17 @@ class CloudPass {
   // Blends the layers over the target's picture as drawn so far (after the
   // sky; multisampled targets after their resolve), recorded as pass "clouds".
   void draw(const environment::CloudFrame& clouds, const CloudView& view, const RenderTarget& target,
-            PassRecorder& recorder) const;
+            PassRecorder& recorder);
 
  private:
-  ShaderProgram program_;
+  void make_half_target(int width, int height);
+  ShaderProgram march_, upsample_;
   Texture noise_;
   VertexArray empty_vao_;
+  // The half-resolution target, for frames of frame_size_.
+  glm::ivec2 frame_size_{0};
+  Texture light_, depth_;
+  Framebuffer half_;
 };
 
 }  // namespace ig::gl

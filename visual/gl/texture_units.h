@@ -25,6 +25,8 @@ enum class TextureUnit : int {
   kEntityBaseColor = 16,  // an entity model's base colour texture (scenes with entities)
   kFrameDepth = 17,     // a full-screen pass's view of the frame's depth (the clouds)
   kCloudNoise = 18,     // the field the cloud layers are cut from (scenes with clouds)
+  kCloudLight = 19,     // the clouds marched at half resolution: light and the share that shows
+  kCloudDepth = 20,     // the depth each of those was marched to
 };
 
 constexpr int unit(TextureUnit u) { return static_cast<int>(u); }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <optional>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -281,24 +282,45 @@ TEST(Clouds, LitByTheSunAndSkyFromNoonToMidnight) {
 
 TEST(Clouds, FixedToTheWorldAsTheEyeTurns) {
   // Straight up, heading 0 and 180: the same sky turned half a turn, so
-  // pixel (x, y) of one is pixel (w-1-x, h-1-y) of the other.
+  // pixel (x, y) of one is pixel (w-1-x, h-1-y) of the other, within the
+  // half-resolution pixel the march may shift an edge by (the 5 x 5 frame
+  // pixels around it) and the few levels its upsampling may change.
   const CloudLayers st{layer(CloudType::Stratus, 0.5, 6000.0, 300.0)};
   const Shot a = shoot(scene(View{15000.0, 15000.0, 2500.0, 0.0, 90.0, 90.0}, st));
   const Shot b = shoot(scene(View{15000.0, 15000.0, 2500.0, 180.0, 90.0, 90.0}, st));
   std::size_t off = 0, cloud = 0;
+  double sum = 0.0;
+  std::vector<std::uint8_t> diff(a.rgba.size(), 255);
   const Shot clear = shoot(scene(View{15000.0, 15000.0, 2500.0, 0.0, 90.0, 90.0}, {}));
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      const std::size_t p = std::size_t(y) * kW + x, q = std::size_t(kH - 1 - y) * kW + (kW - 1 - x);
-      int most = 0;
-      for (int c = 0; c < 3; ++c) most = std::max(most, std::abs(int(a.rgba[4 * p + c]) - int(b.rgba[4 * q + c])));
-      if (most > 3) ++off;
+  for (int y = 2; y + 2 < kH; ++y)
+    for (int x = 2; x + 2 < kW; ++x) {
+      const std::size_t p = std::size_t(y) * kW + x;
+      int nearest = 256;
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+          const std::size_t q = std::size_t(kH - 1 - y + dy) * kW + (kW - 1 - x + dx);
+          int most = 0;
+          for (int c = 0; c < 3; ++c) most = std::max(most, std::abs(int(a.rgba[4 * p + c]) - int(b.rgba[4 * q + c])));
+          nearest = std::min(nearest, most);
+        }
+      sum += nearest;
+      diff[4 * p] = diff[4 * p + 1] = diff[4 * p + 2] = std::uint8_t(std::min(255, nearest * 10));
+      if (nearest > 10) ++off;
       if (blue_over_red(a, p) < 0.5 * blue_over_red(clear, p)) ++cloud;
     }
-  std::printf("turned half a turn: %zu of %d pixels differ by more than 3 levels (cloud in %zu)\n", off, kW * kH,
-              cloud);
+  const double mean = sum / double((kW - 4) * (kH - 4));
+  if (std::getenv("IG_CLOUDS_DUMP")) {
+    ig::capture::write_png_rgba("/tmp/fixed_a.png", a.rgba, kW, kH);
+    ig::capture::write_png_rgba("/tmp/fixed_b.png", b.rgba, kW, kH);
+    ig::capture::write_png_rgba("/tmp/fixed_diff.png", diff, kW, kH);
+  }
+  std::printf("turned half a turn: %zu of %d pixels differ by more than 10 levels from all of their 5 x 5, "
+              "%.2f levels on average (cloud in %zu)\n", off, kW * kH, mean, cloud);
   EXPECT_GT(cloud, std::size_t(kW * kH / 5));  // there are clouds to compare
+  // Only along the edges, where a thin lit rim falls between the march's
+  // samples in one frame and on one in the other (0.4 % of the frame here).
   EXPECT_LT(off, std::size_t(kW * kH / 100));
+  EXPECT_LT(mean, 1.0);
 }
 
 TEST(Clouds, OvercastShadesTheGroundAndNoCloudsCostNothing) {
