@@ -115,28 +115,16 @@ void HostEnvironment::take_weather(const CigiWeatherControl& w) {
   clouds_changed_ = clouds_changed_ || had_cloud;
   layers_.erase(w.layer);
   if (!w.enabled) return;
-  const auto type = options::cloud_type_of_cigi(w.cloud_type);
-  if (!type) {
+  const auto layer = cigi_cloud_layer(w);
+  if (!layer) {
     if (w.cloud_type != 0) refuse("weather-cloud-type", "Weather Control layer " + std::to_string(w.layer) +
                                                             ": cloud type " + std::to_string(w.cloud_type) +
                                                             " (other) is not drawn");
     layers_[w.layer] = w;  // weather without cloud: its visibility only
     return;
   }
-  options::CloudLayer l;
-  l.id = w.layer;
-  l.type = *type;
-  l.coverage = w.coverage_pct / 100.0;
-  l.base_m = w.base_m;
-  l.thickness_m = w.thickness_m;
-  l.transition_m = w.transition_band_m;
-  l.visibility_m = w.visibility_m;
-  l.scud = w.scud ? w.scud_frequency_pct / 100.0 : 0.0;
-  // The wind blows from wind_direction_deg (clockwise from north).
-  const double to = (double(w.wind_direction_deg) + 180.0) * 3.14159265358979323846 / 180.0;
-  l.wind_mps = double(w.horizontal_wind_mps) * glm::dvec2(std::sin(to), std::cos(to));
   // Terrain-independent checks here, per packet; the scene checks the rest.
-  const auto check = environment::check_cloud_layer(l, -std::numeric_limits<double>::infinity());
+  const auto check = environment::check_cloud_layer(*layer, -std::numeric_limits<double>::infinity());
   if (!check.layer) {
     refuse("weather-cloud-layer", "Weather Control layer " + std::to_string(w.layer) + ": " + check.refused);
     return;

@@ -265,6 +265,23 @@ std::array<std::uint8_t, kCigiWeatherControlSize> encode_cigi_weather(const Cigi
   return b;
 }
 
+std::optional<options::CloudLayer> cigi_cloud_layer(const CigiWeatherControl& w) {
+  const auto type = options::cloud_type_of_cigi(w.cloud_type);
+  if (!type) return std::nullopt;
+  options::CloudLayer l;
+  l.id = w.layer;
+  l.type = *type;
+  l.coverage = double(w.coverage_pct) / 100.0;
+  l.base_m = w.base_m;
+  l.thickness_m = w.thickness_m;
+  l.transition_m = w.transition_band_m;
+  l.visibility_m = w.visibility_m;
+  l.scud = w.scud ? double(w.scud_frequency_pct) / 100.0 : 0.0;
+  const double to = (double(w.wind_direction_deg) + 180.0) * 3.14159265358979323846 / 180.0;
+  l.wind_mps = double(w.horizontal_wind_mps) * glm::dvec2(std::sin(to), std::cos(to));
+  return l;
+}
+
 std::array<std::uint8_t, kCigiCollisionSegmentDefinitionSize> encode_cigi_collision_segment(
     const CigiCollisionSegment& s, bool swap) {
   const Order o = cigi_out_order(swap);

@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/wire/cigi_queries.h"
+#include "options/cloud_options.h"
 
 namespace ig::io::wire {
 
@@ -174,6 +175,13 @@ std::array<std::uint8_t, kCigiCelestialSphereControlSize> encode_cigi_celestial(
                                                                                 bool swap);
 std::array<std::uint8_t, kCigiAtmosphereControlSize> encode_cigi_atmosphere(const CigiAtmosphere& a, bool swap);
 std::array<std::uint8_t, kCigiWeatherControlSize> encode_cigi_weather(const CigiWeatherControl& w, bool swap);
+// The cloud layer a Weather Control packet describes: its layer id, cloud
+// type (1-10; nullopt for 0, none, and 11-15, other), coverage (percent ->
+// share), base, thickness, transition band, visibility, scud (when its bit
+// is set) and the wind it drifts with (horizontal speed blowing from the
+// direction, clockwise from north). Ranges are checked where it is drawn
+// (environment::check_cloud_layer).
+std::optional<options::CloudLayer> cigi_cloud_layer(const CigiWeatherControl& w);
 std::array<std::uint8_t, kCigiCollisionSegmentDefinitionSize> encode_cigi_collision_segment(
     const CigiCollisionSegment& s, bool swap);
 std::array<std::uint8_t, kCigiPositionRequestSize> encode_cigi_position_request(const CigiPositionRequest& r,

@@ -17,6 +17,7 @@
 #include "io/entities/entity_table.h"
 #include "io/wire/cigi_entities.h"
 #include "io/wire/cigi_host_datagram.h"
+#include "environment/cloud_layers.h"
 
 // The entity packets of `packet` behind the datagram's own IG Control.
 template <class Packet>
@@ -72,6 +73,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (c.hour > 23 || c.minute > 59 || again(encode_cigi_celestial(c, swap)).celestial.at(0) != c) __builtin_trap();
   for (const CigiAtmosphere& a : h.atmosphere)
     if (!(a.visibility_m >= 0.0f) || again(encode_cigi_atmosphere(a, swap)).atmosphere.at(0) != a) __builtin_trap();
+  // Weather: re-encodes to itself; as a cloud layer, accepted only within
+  // the documented ranges.
+  for (const CigiWeatherControl& w : h.weather) {
+    if (again(encode_cigi_weather(w, swap)).weather.at(0) != w) __builtin_trap();
+    const auto layer = cigi_cloud_layer(w);
+    if (!layer) continue;
+    const auto check = ig::environment::check_cloud_layer(*layer, 0.0);
+    if (check.layer && !(check.layer->coverage >= 0.0 && check.layer->coverage <= 1.0 && check.layer->thickness_m >= 0.0 &&
+                         check.layer->base_m >= 0.0 && check.layer->base_m + check.layer->thickness_m <= 1e5 &&
+                         check.layer->visibility_m > 0.0 && std::isfinite(check.layer->wind_mps.x)))
+      __builtin_trap();
+  }
   for (const CigiRateControl& rc : h.rates)
     if (again(encode_cigi_rate_control(rc, swap)).rates.at(0) != rc) __builtin_trap();
   for (const CigiCollisionSegment& sg : h.segments)
