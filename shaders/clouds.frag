@@ -73,6 +73,18 @@ float field(int i, vec2 xy, float footprint, out float blur) {
   return textureLod(u_noise, uv, lod).r;
 }
 
+float density(int i, float n, float blur, float alt, out float top_here);
+
+// Layer i's density at distance t along the ray (its altitude and the
+// cloud's top above that point with it), the field filtered for `footprint`.
+float sample_layer(int i, vec3 dir, float t, float k2, float footprint, out float alt, out float top_here) {
+  vec3 p = dir * t;
+  alt = altitude(t, dir.z, k2);
+  float blur;
+  float n = field(i, p.xy, footprint, blur);
+  return density(i, n, blur, alt, top_here);
+}
+
 // Density (0-1 of the layer's extinction) at altitude alt over noise value
 // n; `top_here`: the cloud's top above this point (for its light).
 float density(int i, float n, float blur, float alt, out float top_here) {
@@ -163,14 +175,17 @@ void main() {
     // Decks: a fixed number of steps a stretch (their density changes only
     // with coverage), so neighbouring pixels sample alike. Heaps: steps of a
     // quarter of an element, growing with distance (and the field blurred
-    // to match) so a long grazing ray still crosses the layer, started at a
-    // per-pixel offset so the steps leave no terraces.
+    // to match) so a long grazing ray still crosses the layer, from a
+    // per-pixel start; where a step enters cloud from clear air the entry is
+    // found by halving the step five times (so the surface is not terraced
+    // by the steps), and from there the steps are a sixteenth of an element.
     float len = seg[s].y - seg[s].x;
     bool heaps = sh.y == 1.0;
     int steps = heaps ? 48 : int(sh.z);
     float element = sh.w * 16.0;
     float t = seg[s].x + (heaps ? jitter * element * 0.25 : 0.0);
-    bool fine = false;  // heaps: coarse steps until the first cloud, then fine ones from just before it
+    float t_clear = seg[s].x;  // heaps: the last sample in clear air
+    bool fine = false, was_clear = true;
     for (int k = 0; k < steps && t < seg[s].y; ++k) {
       float dt = !heaps ? len / float(steps)
                  : fine ? max(element * (1.0 / 16.0), t * 0.015)
@@ -178,19 +193,30 @@ void main() {
       if (!heaps) t = seg[s].x + (float(k) + 0.5) * dt;
       float t_here = t;
       if (heaps) dt = min(dt, seg[s].y - t_here);  // not past the terrain
-      t += dt;
-      vec3 p = dir * t_here;
-      float alt = altitude(t_here, dir.z, k2);
-      float blur;
-      float n = field(i, p.xy, max(t_here * u_pixel_spread, heaps ? 0.5 * dt : 0.0), blur);
-      float top_here;
-      float rho = density(i, n, blur, alt, top_here);
-      if (rho <= 0.0) continue;
-      if (heaps && !fine) {
-        fine = true;
-        t = max(t_here - dt, seg[s].x) + jitter * max(element * (1.0 / 16.0), t_here * 0.015);
+      float footprint = max(t_here * u_pixel_spread, heaps ? 0.5 * dt : 0.0);
+      float alt, top_here;
+      float rho = sample_layer(i, dir, t_here, k2, footprint, alt, top_here);
+      if (heaps && rho <= 0.0) {
+        t_clear = t_here;
+        was_clear = true;
+        t += dt;
         continue;
       }
+      if (heaps && was_clear) {
+        float lo = t_clear, hi = t_here;
+        for (int b = 0; b < 5; ++b) {
+          float mid = 0.5 * (lo + hi), a_mid, top_mid;
+          if (sample_layer(i, dir, mid, k2, footprint, a_mid, top_mid) > 0.0) hi = mid;
+          else lo = mid;
+        }
+        t_here = hi;
+        rho = sample_layer(i, dir, t_here, k2, footprint, alt, top_here);
+        fine = true;
+        dt = min(max(element * (1.0 / 16.0), t_here * 0.015), seg[s].y - t_here);
+      }
+      was_clear = false;
+      t = t_here + dt;
+      if (rho <= 0.0) continue;
       float ext = g.w * rho;
       // Light: the sun through the cloud above this point (a quarter of the
       // extinction: most light scattered on the way is scattered forwards),
@@ -203,7 +229,7 @@ void main() {
       vec3 c = u_sun_light * (phase * sun_t + 1.2 * diffused * sun_z) + mix(u_sky_base, u_sky_top, height) * diffused;
       c = 1.0 - exp(-1.3 * c);  // lit tops stay below white, so their relief shows
       c = mix(c, u_fog_color, fog_of(t_here));
-      float a = 1.0 - exp(-ext * dt);
+      float a = 1.0 - exp(-ext * max(dt, 0.0));
       light += through * a * c;
       through *= 1.0 - a;
       if (through <= 0.01) break;

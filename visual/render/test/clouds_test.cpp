@@ -309,9 +309,9 @@ TEST(Clouds, FixedToTheWorldAsTheEyeTurns) {
   std::printf("turned half a turn: %zu of %d pixels differ by more than 10 levels from all of their 5 x 5, "
               "%.2f levels on average (cloud in %zu)\n", off, kW * kH, mean, cloud);
   EXPECT_GT(cloud, std::size_t(kW * kH / 5));  // there are clouds to compare
-  // Only along the edges, where a thin lit rim falls between the march's
-  // samples in one frame and on one in the other (0.4 % of the frame here).
-  EXPECT_LT(off, std::size_t(kW * kH / 100));
+  // Only along edges, where a thin lit rim can fall between the march's
+  // samples in one frame and on one in the other (0.05 % of the frame here).
+  EXPECT_LT(off, std::size_t(kW * kH / 500));
   EXPECT_LT(mean, 1.0);
 }
 
