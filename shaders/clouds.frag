@@ -176,16 +176,16 @@ void main() {
     // with coverage), so neighbouring pixels sample alike. Heaps: steps of a
     // quarter of an element, growing with distance (and the field blurred
     // to match) so a long grazing ray still crosses the layer, from a
-    // per-pixel start; where a step enters cloud from clear air the entry is
-    // found by halving the step five times (so the surface is not terraced
-    // by the steps), and from there the steps are a sixteenth of an element.
+    // per-pixel start; where the first step enters cloud the entry is found
+    // by halving that step four times (so the surface is not terraced by the
+    // steps), and from there the steps are a sixteenth of an element.
     float len = seg[s].y - seg[s].x;
     bool heaps = sh.y == 1.0;
-    int steps = heaps ? 48 : int(sh.z);
+    int steps = heaps ? 32 : int(sh.z);
     float element = sh.w * 16.0;
     float t = seg[s].x + (heaps ? jitter * element * 0.25 : 0.0);
     float t_clear = seg[s].x;  // heaps: the last sample in clear air
-    bool fine = false, was_clear = true;
+    bool fine = false;
     for (int k = 0; k < steps && t < seg[s].y; ++k) {
       float dt = !heaps ? len / float(steps)
                  : fine ? max(element * (1.0 / 16.0), t * 0.015)
@@ -198,13 +198,12 @@ void main() {
       float rho = sample_layer(i, dir, t_here, k2, footprint, alt, top_here);
       if (heaps && rho <= 0.0) {
         t_clear = t_here;
-        was_clear = true;
         t += dt;
         continue;
       }
-      if (heaps && was_clear) {
+      if (heaps && !fine) {
         float lo = t_clear, hi = t_here;
-        for (int b = 0; b < 5; ++b) {
+        for (int b = 0; b < 4; ++b) {
           float mid = 0.5 * (lo + hi), a_mid, top_mid;
           if (sample_layer(i, dir, mid, k2, footprint, a_mid, top_mid) > 0.0) hi = mid;
           else lo = mid;
@@ -214,7 +213,6 @@ void main() {
         fine = true;
         dt = min(max(element * (1.0 / 16.0), t_here * 0.015), seg[s].y - t_here);
       }
-      was_clear = false;
       t = t_here + dt;
       if (rho <= 0.0) continue;
       float ext = g.w * rho;
