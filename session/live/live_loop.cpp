@@ -122,6 +122,10 @@ int run_live(io::Scenario scenario, const std::string& config, const std::filesy
   if (cigi_source)
     environment = std::make_unique<HostEnvironment>(*services, local_to_geodetic(runner.heightfield()),
                                                     runner.scene().shading().fog_visibility_m);
+  // The host's Weather Control may bring clouds at any frame: the frame
+  // log's columns carry the cloud pass from the start.
+  if (environment)
+    for (auto& channel : runner.channels()) channel.renderer->set_clouds_may_come(true);
   // Every entity the host places besides the ownship, clamped to the
   // surface host queries answer from.
   std::unique_ptr<io::EntityTable> entities;

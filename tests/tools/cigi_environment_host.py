@@ -15,13 +15,19 @@ with the IG), alternating big- and little-endian datagrams, and drives
   frame 1: two collision segments straight down from the ownship, one 50 m
            past the ground (HAT + 50) and one ending 50 m above it, and a
            continuous Position Request for view 0;
-  frames 2..: Entity Control only.
+  frame 3: Weather Control: cloud layer 1 (stratus, 100 %, base 500 m
+           above the ownship, 300 m thick), layer 2 with coverage 150 %
+           (refused) and layer 3 of cloud type 12, "other" (refused);
+  frame 7: Weather Control disabling layer 1;
+  the other frames: Entity Control only.
 
 Checks the answers (Position Response at the pose sent, within 1e-6 deg and
 0.5 m; the segment through the ground notified at the HAT distance, the
 other never; the weather response's visibility; IG Messages for what is not
 supported) and summary.json (visibility_m 5000, the sun within 0.6 deg of
-the NOAA solar equations at the ownship, cigi.unsupported by opcode).
+the NOAA solar equations at the ownship, cigi.unsupported by opcode), the
+cloud layer drawn from frame 3 to frame 6 (frames.csv passes), the two bad
+layers counted under cigi.rejected and named in IG Messages.
 The host then stops and the IG is ended by SIGTERM while it waits for the
 next host frame: it must exit cleanly and leave final.png.
 Prints PASS environment or FAIL lines. Exit 77 without IG_DEM_DIR.
@@ -74,6 +80,15 @@ def celestial(e, hour, minute, month, day, year, ephemeris):
 
 def atmosphere(e, visibility_m):
     return struct.pack(e + "BBBBffffffI", 10, 32, 1, 50, 15.0, visibility_m, 3.0, 0.0, 270.0, 1013.25, 0)
+
+
+def weather_control(e, layer, cloud_type, enabled, coverage_pct, base_m, thickness_m):
+    # [2] region id, [4] layer, [5] humidity, [6] enable | cloud type << 4,
+    # [7] scope 0 (global); f32: air temperature, visibility, scud frequency,
+    # coverage, base, thickness, transition band, horizontal and vertical
+    # wind, wind direction, pressure, aerosol.
+    return struct.pack(e + "BBHBBBBffffffffffff", 12, 56, 0, layer, 80, (1 if enabled else 0) | (cloud_type << 4), 0,
+                       10.0, 0.0, 0.0, coverage_pct, base_m, thickness_m, 50.0, 5.0, 0.0, 270.0, 1013.25, 0.0)
 
 
 def position_request(e, obj, object_class, continuous):
@@ -191,6 +206,12 @@ def main():
             elif k == 1:
                 d += collision_segment(e, 1, hat + 50.0) + collision_segment(e, 2, hat - 50.0)
                 d += position_request(e, 0, 2, True)
+            elif k == 3:
+                d += (weather_control(e, 1, 10, True, 100.0, ALT + 500.0, 300.0)
+                      + weather_control(e, 2, 10, True, 150.0, ALT + 900.0, 300.0)
+                      + weather_control(e, 3, 12, True, 50.0, ALT + 900.0, 300.0))
+            elif k == 7:
+                d += weather_control(e, 1, 10, False, 100.0, ALT + 500.0, 300.0)
             send.sendto(d, ("127.0.0.1", port))
             while True:
                 frame, packets = parse_ig(reply.recvfrom(65535)[0])
@@ -244,7 +265,8 @@ def main():
         fail(f"Weather Conditions Response {weather}: expected request 3 with visibility 5000")
     messages = [m for a in answers for m in a.get(117, [])]
     print("IG messages:", messages)
-    for needle in ("opcode 4 ", "opcode 35 ", "database 7", "entity 5"):
+    for needle in ("opcode 4 ", "opcode 35 ", "database 7", "entity 5", "layer 2: coverage outside 0-100 %",
+                   "cloud type 12 (other) is not drawn"):
         if not any(needle in m for m in messages):
             fail(f"no IG Message about {needle.strip()}")
 
@@ -265,6 +287,13 @@ def main():
     vis = [float(r[header.index("visibility_m")]) for r in rows]
     if vis[0] != 5000.0 or vis[-1] != 5000.0:
         fail(f"frames.csv visibility_m {vis[0]} .. {vis[-1]}, expected 5000 from frame 0")
+    clouds = [k for k, r in enumerate(rows) if "clouds" in r[header.index("passes")]]
+    print("frames with the cloud pass:", clouds)
+    if clouds != list(range(3, 7)):
+        fail(f"the cloud layer drawn in frames {clouds}, expected 3..6 (set in frame 3, removed in frame 7)")
+    rejected = s["cigi"]["rejected"]
+    if rejected.get("weather-cloud-layer") != 1 or rejected.get("weather-cloud-type") != 1:
+        fail(f"cigi.rejected {rejected}: expected one bad cloud layer and one cloud type 'other'")
     if failures:
         return 1
     print("PASS environment")

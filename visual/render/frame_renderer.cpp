@@ -11,13 +11,14 @@ using stats::ms_since;
 // The work counters' passes: the method's, deferred shading's, its water
 // pass (scenes with water only), the sky and the anti-aliasing post pass (0
 // where the frame has none); the clouds after the sky in a scene with them.
-std::vector<std::string> pass_names_of(const TerrainMethod& method, const TerrainScene& scene, bool entities) {
+std::vector<std::string> pass_names_of(const TerrainMethod& method, const TerrainScene& scene, bool entities,
+                                       bool clouds) {
   auto names = method.pass_names();
   names.push_back("shade");
   if (scene.has_water()) names.push_back("water");
   if (entities) names.push_back("entities");
   names.push_back("sky");
-  if (!scene.clouds().empty()) names.push_back("clouds");
+  if (clouds || !scene.clouds().empty()) names.push_back("clouds");
   names.push_back("aa");
   return names;
 }
@@ -29,7 +30,7 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
       shader_dir_(shader_dir),
       sky_(shader_dir),
       post_filter_(shader_dir),
-      recorder_(pass_names_of(method, scene, false)) {
+      recorder_(pass_names_of(method, scene, false, false)) {
   method_->set_pass_recorder(&recorder_);
   take_shading_settings();
 }
@@ -65,7 +66,8 @@ FrameRenderer::~FrameRenderer() { method_->set_pass_recorder(nullptr); }
 void FrameRenderer::set_method(TerrainMethod& method) {
   method_->set_pass_recorder(nullptr);
   method_ = &method;
-  if (auto names = pass_names_of(method, scene_, entities_ != nullptr); names != recorder_.pass_names())
+  if (auto names = pass_names_of(method, scene_, entities_ != nullptr, clouds_may_come_);
+      names != recorder_.pass_names())
     recorder_.reset_passes(std::move(names));
   method_->set_pass_recorder(&recorder_);
   take_shading_settings();
@@ -77,7 +79,8 @@ void FrameRenderer::set_entities(EntityRenderer* entities) {
 }
 
 void FrameRenderer::update_pass_names() {
-  if (auto names = pass_names_of(*method_, scene_, entities_ != nullptr); names != recorder_.pass_names())
+  if (auto names = pass_names_of(*method_, scene_, entities_ != nullptr, clouds_may_come_);
+      names != recorder_.pass_names())
     recorder_.reset_passes(std::move(names));
 }
 

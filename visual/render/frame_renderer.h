@@ -83,6 +83,14 @@ class FrameRenderer {
   // Entities drawn after the terrain, before the sky (nullptr: none; the
   // frame then has no entity pass). Not owned.
   void set_entities(EntityRenderer* entities);
+  // Clouds may come during the run (a CIGI host's Weather Control): the
+  // work counters carry a "clouds" pass from the first frame (0 while there
+  // are none), so a frame log's columns stay the same. Without it the pass
+  // is declared only while the scene has clouds.
+  void set_clouds_may_come(bool on) {
+    clouds_may_come_ = on;
+    update_pass_names();
+  }
   // For tests: the post filter on every pixel in one draw instead of on the
   // pixels its first draw marks (gl::PostFilterPass).
   void set_post_filter_mask(bool on) { post_filter_.set_edge_mask(on); }
@@ -111,6 +119,7 @@ class FrameRenderer {
   EntityRenderer* entities_ = nullptr;
   bool wireframe_ = false;
   bool back_face_culling_ = true;
+  bool clouds_may_come_ = false;
 };
 
 }  // namespace ig::render
