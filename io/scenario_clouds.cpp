@@ -1,8 +1,5 @@
 // The scenario's environment.clouds: cloud layers (docs/scenario.md).
-#include <cmath>
 #include <string>
-
-#include <glm/vec2.hpp>
 
 #include "io/scenario_json.h"
 
@@ -10,9 +7,9 @@ namespace ig::io::scenario_json {
 
 options::CloudLayers parse_clouds(const json& j, const std::string& path) {
   require_array(j, path);
-  constexpr std::size_t kMaxLayers = 4;  // as environment::kMaxCloudLayers: the most drawn at once
-  if (j.size() > kMaxLayers)
-    fail(path, "at most " + std::to_string(kMaxLayers) + " cloud layers (got " + std::to_string(j.size()) + ")");
+  if (j.size() > std::size_t(options::kMaxCloudLayers))
+    fail(path, "at most " + std::to_string(options::kMaxCloudLayers) + " cloud layers (got " +
+                   std::to_string(j.size()) + ")");
   options::CloudLayers out;
   for (std::size_t i = 0; i < j.size(); ++i) {
     const std::string p = element(path, i);
@@ -44,9 +41,7 @@ options::CloudLayers parse_clouds(const json& j, const std::string& path) {
     double speed = 0.0, from_deg = 0.0;
     if (c.contains("wind_mps")) speed = get_number_in(c["wind_mps"], child(p, "wind_mps"), 0.0, 200.0);
     if (c.contains("wind_from_deg")) from_deg = get_number_in(c["wind_from_deg"], child(p, "wind_from_deg"), -360.0, 360.0);
-    // Blowing from `from_deg` (clockwise from north): moving towards the opposite bearing.
-    const double to = (from_deg + 180.0) * 3.14159265358979323846 / 180.0;
-    l.wind_mps = speed * glm::dvec2(std::sin(to), std::cos(to));
+    l.wind_mps = options::wind_from(speed, from_deg);
     out.push_back(l);
   }
   return out;

@@ -5,6 +5,7 @@
 // defaults are in visual/environment/cloud_layers.h.
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -13,6 +14,10 @@
 #include <glm/vec2.hpp>
 
 namespace ig::options {
+
+// The most cloud layers drawn at once: CIGI's three cloud layers and one
+// more (layer ids 10-255 are the IG's own); more are refused.
+constexpr int kMaxCloudLayers = 4;
 
 // CIGI 3.3's cloud types, numbered as Weather Control sends them (0 is
 // "none": a weather layer without cloud, never a CloudLayer).
@@ -63,5 +68,12 @@ struct CloudLayer {
 };
 
 using CloudLayers = std::vector<CloudLayer>;
+
+// The velocity of a wind of `speed_mps` blowing from `from_deg` (clockwise
+// from north, as weather reports give it): towards the opposite bearing.
+inline glm::dvec2 wind_from(double speed_mps, double from_deg) {
+  const double to = (from_deg + 180.0) * 3.14159265358979323846 / 180.0;
+  return speed_mps * glm::dvec2(std::sin(to), std::cos(to));
+}
 
 }  // namespace ig::options

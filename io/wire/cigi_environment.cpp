@@ -277,8 +277,7 @@ std::optional<options::CloudLayer> cigi_cloud_layer(const CigiWeatherControl& w)
   l.transition_m = w.transition_band_m;
   l.visibility_m = w.visibility_m;
   l.scud = w.scud ? double(w.scud_frequency_pct) / 100.0 : 0.0;
-  const double to = (double(w.wind_direction_deg) + 180.0) * 3.14159265358979323846 / 180.0;
-  l.wind_mps = double(w.horizontal_wind_mps) * glm::dvec2(std::sin(to), std::cos(to));
+  l.wind_mps = options::wind_from(w.horizontal_wind_mps, w.wind_direction_deg);
   return l;
 }
 

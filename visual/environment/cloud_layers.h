@@ -10,9 +10,7 @@
 
 namespace ig::environment {
 
-// The most cloud layers drawn at once: CIGI's three cloud layers and one
-// more (layer ids 10-255 are the IG's own); more are refused.
-constexpr int kMaxCloudLayers = 4;
+using options::kMaxCloudLayers;  // the most drawn at once
 // Nothing above this is weather (the top of a layer may not exceed it).
 constexpr double kMaxCloudTopM = 100000.0;
 
