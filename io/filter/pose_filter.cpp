@@ -80,6 +80,7 @@ PoseFilter::PoseFilter(const PoseFilterOptions& options)
 void PoseFilter::reset() {
   clear_stream();
   sender_clock_.reset();
+  motion_.reset();
 }
 
 void PoseFilter::clear_stream() {
@@ -184,6 +185,11 @@ bool PoseFilter::insert_sorted(const Entry& e) {
   return true;
 }
 
+std::optional<std::uint32_t> PoseFilter::clock_sequence(const PoseSample& s) {
+  if (s.sequence || !s.velocity_mps) return s.sequence;
+  return motion_.next(s.position, *s.velocity_mps, s.receive_time_s, sender_clock_.period_s());
+}
+
 bool PoseFilter::push(const PoseSample& s) {
   ++counters_.received;
   if (!finite_sample(s)) {
@@ -193,7 +199,7 @@ bool PoseFilter::push(const PoseSample& s) {
   Entry e;
   // Without a sender clock: the de-jittered estimate of when it was sent.
   if (s.sender_time_s) e.t = *s.sender_time_s;
-  else if (opt_.dejitter_receive_times) e.t = sender_clock_.stamp(s.receive_time_s, s.sequence);
+  else if (opt_.dejitter_receive_times) e.t = sender_clock_.stamp(s.receive_time_s, clock_sequence(s));
   else e.t = s.receive_time_s;
   e.recv = s.receive_time_s;
   e.seq = s.sequence.value_or(0);
@@ -222,7 +228,8 @@ bool PoseFilter::push(const PoseSample& s) {
     ++counters_.time_jumps;
     if (!has_sender && opt_.dejitter_receive_times) {
       sender_clock_.reset();
-      e.t = sender_clock_.stamp(s.receive_time_s, s.sequence);
+      motion_.reset();
+      e.t = sender_clock_.stamp(s.receive_time_s, clock_sequence(s));
     }
     stream_has_sender_ = has_sender;
     stream_has_seq_ = has_seq;

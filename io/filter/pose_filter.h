@@ -26,6 +26,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
+#include "io/filter/motion_counter.h"
 #include "io/filter/sender_clock.h"
 
 namespace ig::io {
@@ -222,6 +223,8 @@ class PoseFilter {
   PoseFilterOptions opt_;
   PoseFilterCounters counters_;
   SenderClock sender_clock_;
+  MotionCounter motion_;  // the packet counter of a stream with velocities but no counter or sender time
+  std::optional<std::uint32_t> clock_sequence(const PoseSample& s);
 
   std::array<Entry, kCapacity> buf_{};
   int head_ = 0, count_ = 0;
