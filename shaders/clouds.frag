@@ -33,7 +33,6 @@ uniform vec3 u_fog_color;
 
 const float kFar = 250000.0;
 const float kBig = 1e30;
-const float kNoiseSide = 256.0;
 
 // The share of the light on a cloud's top that diffuses down through optical
 // depth tau (two-stream, strongly forward-scattering droplets).

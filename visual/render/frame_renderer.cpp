@@ -31,6 +31,7 @@ FrameRenderer::FrameRenderer(const TerrainScene& scene, TerrainMethod& method, c
       sky_(shader_dir),
       post_filter_(shader_dir),
       recorder_(pass_names_of(method, scene, false, false)) {
+  scene_had_clouds_ = !scene_.clouds().empty();
   method_->set_pass_recorder(&recorder_);
   take_shading_settings();
 }
@@ -79,6 +80,7 @@ void FrameRenderer::set_entities(EntityRenderer* entities) {
 }
 
 void FrameRenderer::update_pass_names() {
+  scene_had_clouds_ = !scene_.clouds().empty();
   if (auto names = pass_names_of(*method_, scene_, entities_ != nullptr, clouds_may_come_);
       names != recorder_.pass_names())
     recorder_.reset_passes(std::move(names));
@@ -106,7 +108,9 @@ ViewSelection FrameRenderer::select(const Camera& world_camera, const gl::Render
   // Methods work in terrain-local metres (world origin subtracted in double)
   // and see the scene's Earth curvature through the camera.
   s.camera = scene_.local_camera(world_camera);
-  update_pass_names();  // the clouds come and go with the host's weather
+  // The clouds come and go with the host's weather: the pass list changes
+  // only when they do (no list is built in a frame that keeps it).
+  if (!scene_.clouds().empty() != scene_had_clouds_) update_pass_names();
   recorder_.begin_frame();
   s.work_at_start = gl::work_tally();
   method_->set_viewport(target.width(), target.height());

@@ -120,6 +120,7 @@ class FrameRenderer {
   bool wireframe_ = false;
   bool back_face_culling_ = true;
   bool clouds_may_come_ = false;
+  bool scene_had_clouds_ = false;  // when the pass list was last made
 };
 
 }  // namespace ig::render
