@@ -190,6 +190,10 @@ std::optional<std::uint32_t> PoseFilter::clock_sequence(const PoseSample& s) {
   return motion_.next(s.position, *s.velocity_mps, s.receive_time_s, sender_clock_.period_s());
 }
 
+CounterUnit PoseFilter::clock_counter_unit(const PoseSample& s) {
+  return !s.sequence && s.velocity_mps ? CounterUnit::ClockPeriods : CounterUnit::SenderPackets;
+}
+
 bool PoseFilter::push(const PoseSample& s) {
   ++counters_.received;
   if (!finite_sample(s)) {
@@ -199,7 +203,7 @@ bool PoseFilter::push(const PoseSample& s) {
   Entry e;
   // Without a sender clock: the de-jittered estimate of when it was sent.
   if (s.sender_time_s) e.t = *s.sender_time_s;
-  else if (opt_.dejitter_receive_times) e.t = sender_clock_.stamp(s.receive_time_s, clock_sequence(s));
+  else if (opt_.dejitter_receive_times) e.t = sender_clock_.stamp(s.receive_time_s, clock_sequence(s), clock_counter_unit(s));
   else e.t = s.receive_time_s;
   e.recv = s.receive_time_s;
   e.seq = s.sequence.value_or(0);
@@ -229,7 +233,7 @@ bool PoseFilter::push(const PoseSample& s) {
     if (!has_sender && opt_.dejitter_receive_times) {
       sender_clock_.reset();
       motion_.reset();
-      e.t = sender_clock_.stamp(s.receive_time_s, clock_sequence(s));
+      e.t = sender_clock_.stamp(s.receive_time_s, clock_sequence(s), clock_counter_unit(s));
     }
     stream_has_sender_ = has_sender;
     stream_has_seq_ = has_seq;

@@ -225,6 +225,7 @@ class PoseFilter {
   SenderClock sender_clock_;
   MotionCounter motion_;  // the packet counter of a stream with velocities but no counter or sender time
   std::optional<std::uint32_t> clock_sequence(const PoseSample& s);
+  static CounterUnit clock_counter_unit(const PoseSample& s);  // what clock_sequence counts
 
   std::array<Entry, kCapacity> buf_{};
   int head_ = 0, count_ = 0;

@@ -8,6 +8,7 @@ namespace ig::io {
 namespace {
 constexpr double kMinPeriodS = 1e-3;  // 1 kHz: faster senders are clamped to this period
 constexpr double kMaxPeriodS = 5.0;
+constexpr double kCountedStepFraction = 0.8;  // the fastest playout: 1 / 0.8 = 1.25 x the flown speed
 constexpr std::int32_t kMaxSequenceStep = 1000;  // further: a counter restart or a different sender
 }  // namespace
 
@@ -52,7 +53,9 @@ double SenderClock::envelope(std::int64_t index, double arrival_s) const {
 
 void SenderClock::fit_period() {
   if (count_ < kMinFit) {
-    period_ = rounding_period();
+    // Too few points for the fit yet: the gaps' median, unless the counter
+    // already counts in the period held.
+    if (unit_ == CounterUnit::SenderPackets) period_ = rounding_period();
     return;
   }
   // The envelope point (least delayed packet) of the older and of the newer
@@ -105,8 +108,9 @@ double SenderClock::relock(double arrival_s, std::optional<std::uint32_t> sequen
   return s;
 }
 
-double SenderClock::stamp(double arrival_s, std::optional<std::uint32_t> sequence) {
+double SenderClock::stamp(double arrival_s, std::optional<std::uint32_t> sequence, CounterUnit unit) {
   if (!std::isfinite(arrival_s)) return started_ ? last_stamp_ : 0.0;
+  unit_ = sequence ? unit : CounterUnit::SenderPackets;
   if (!started_) return relock(arrival_s, sequence);
   // Receive times never run back on one socket; clamp rather than trust a
   // recording edited by hand.
@@ -138,7 +142,7 @@ double SenderClock::stamp(double arrival_s, std::optional<std::uint32_t> sequenc
   gap_next_ = (gap_next_ + 1) % kGaps;
   gap_count_ = std::min(gap_count_ + 1, kGaps);
 
-  if (!locked()) period_ = rounding_period();  // too few points for the fit yet
+  if (!locked() && unit_ == CounterUnit::SenderPackets) period_ = rounding_period();  // see fit_period()
 
   const std::int64_t index = last_index_ + step;
   // Where the window's envelope puts this index.
@@ -156,7 +160,11 @@ double SenderClock::stamp(double arrival_s, std::optional<std::uint32_t> sequenc
   // window), so the stamps stay regular.
   double env = std::min(slot, arrival_s);
   if (locked()) env = std::min(env, last_stamp_ + 1.01 * period_ * double(step));
-  const double floor = last_stamp_ + opt_.min_step_fraction * period_ * double(step);
+  // A counter in this clock's periods measures sender time: its stamps may
+  // close up less (an early first packet must not play out a bunched pair fast).
+  const double fraction =
+      unit_ == CounterUnit::ClockPeriods ? std::max(opt_.min_step_fraction, kCountedStepFraction) : opt_.min_step_fraction;
+  const double floor = last_stamp_ + fraction * period_ * double(step);
   double s = env;
   if (s < floor) {
     s = floor;

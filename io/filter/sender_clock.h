@@ -44,6 +44,13 @@ struct SenderClockOptions {
   double relock_lateness_periods = 2.0;
 };
 
+// What a stream's counter counts: the sender's packets (a real sequence
+// number), or periods of this clock's own estimate (a counter made by the
+// receiver, io/filter/motion_counter.h: index x period is already sender
+// time, so before the clock locks the period must stay the one it was
+// counted in; bunched arrival gaps would shrink it and speed the playout).
+enum class CounterUnit { SenderPackets, ClockPeriods };
+
 struct SenderClockCounters {
   std::uint64_t stamped = 0;
   std::uint64_t relocks = 0;         // gaps, rate changes, counter restarts
@@ -60,7 +67,8 @@ class SenderClock {
   // with the sender's packet counter when the stream has one. Stamps of
   // in-order packets strictly increase. A stale packet (counter at or behind
   // the newest) gets the envelope time of its index without changing state.
-  double stamp(double arrival_s, std::optional<std::uint32_t> sequence = std::nullopt);
+  double stamp(double arrival_s, std::optional<std::uint32_t> sequence = std::nullopt,
+               CounterUnit unit = CounterUnit::SenderPackets);
 
   void reset();
   double period_s() const { return period_; }
@@ -92,6 +100,7 @@ class SenderClock {
   int gap_count_ = 0, gap_next_ = 0;
   bool started_ = false;
   double period_ = 1.0 / 60.0;
+  CounterUnit unit_ = CounterUnit::SenderPackets;  // of the packet being stamped
   double last_arrival_ = 0.0, last_stamp_ = 0.0;
   std::int64_t last_index_ = 0;
   std::optional<std::uint32_t> last_seq_;
