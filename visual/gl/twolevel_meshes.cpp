@@ -61,7 +61,9 @@ Level1SizeMeshes::Level1SizeMeshes(int n, int w, int stride) {
   vertex_attrib_int(ring_vao, 0, 2, GL_SHORT, 0, 0);
 }
 
-void Level1SizeMeshes::upload_wall_heights(const std::vector<glm::vec2>& wall_z) const {
+void Level1SizeMeshes::upload_wall_heights(const std::vector<glm::vec2>& wall_z, std::uint64_t version) {
+  if (uploaded_wall_version_ == version) return;
+  uploaded_wall_version_ = version;
   const GLsizeiptr bytes = std::min(wall_bytes, GLsizeiptr(wall_z.size() * sizeof(glm::vec2)));
   glNamedBufferSubData(wall_heights.id(), 0, bytes, wall_z.data());
   count_upload(std::uint64_t(bytes));

@@ -3,6 +3,7 @@
 // buffer, and per Level1 size the seam walls and the transition band's ring.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -14,8 +15,9 @@ namespace ig::gl {
 
 // Walls around Level1's square (they close the step between Level1's edge
 // and Level0's coarser surface there, whichever is higher) and the band's
-// ring, for one (N, w_trans) pair. The walls' heights change every frame
-// (lod::TwoLevelSelection::wall_z, uploaded by upload_wall_heights).
+// ring, for one (N, w_trans) pair. The walls' heights change with the
+// square and the view (lod::TwoLevelSelection::wall_z, uploaded by
+// upload_wall_heights only when its version differs from the last one here).
 struct Level1SizeMeshes {
   VertexArray wall_vao;
   Buffer wall_local, wall_heights, wall_ibo;
@@ -27,7 +29,10 @@ struct Level1SizeMeshes {
 
   // stride: the ring's sample step (w and n - 1 are multiples of it).
   Level1SizeMeshes(int n, int w, int stride);
-  void upload_wall_heights(const std::vector<glm::vec2>& wall_z) const;
+  void upload_wall_heights(const std::vector<glm::vec2>& wall_z, std::uint64_t version);
+
+ private:
+  std::optional<std::uint64_t> uploaded_wall_version_;
 };
 
 // Level0's static buffer: per vertex its sample index (2 x i32) and lift (f32).

@@ -97,7 +97,7 @@ void TwoLevelPasses::draw_level1(const lod::TwoLevelSelection& sel, const TwoLev
   constexpr long long kBlockQuads = lod::kLevel1BlockQuads;
   drawn.level1_tris = 2LL * kBlockQuads * kBlockQuads * (long long)sel.visible_blocks.size();
   Level1SizeMeshes& m = meshes_for(sel.n, sel.band_w);
-  m.upload_wall_heights(sel.wall_z);
+  m.upload_wall_heights(sel.wall_z, sel.wall_version);
   grid_program_.set("u_origin", sel.origin);
   grid_program_.set("u_origin_rel", relative(sel.origin, ctx));
   glBindVertexArray(m.wall_vao.id());

@@ -62,6 +62,19 @@ TwoLevelSelector::TwoLevelSelector(const terrain::Heightfield& hf, const terrain
   level0_resolution_ = double(level0_.samples.size()) / (double(hf.width) * hf.height);
   const glm::dvec2 spacing(hf.spacing_x_m, hf.spacing_y_m);
   clusters_ = std::make_unique<Level0Clusters>(level0_, spacing);
+  // Every height the walls can take: the DEM's (its statistics and its
+  // pyramid's root) and Level0's (lifted or not).
+  level0_z_lo_ = hf.min_m;
+  level0_z_hi_ = hf.max_m;
+  if (!pyramid_.empty()) {
+    const auto root = pyramid_.node(pyramid_.num_levels() - 1, 0, 0);
+    level0_z_lo_ = std::min(level0_z_lo_, double(root.lo));
+    level0_z_hi_ = std::max(level0_z_hi_, double(root.hi));
+  }
+  for (const auto& p : level0_.positions) {
+    level0_z_lo_ = std::min(level0_z_lo_, double(p.z));
+    level0_z_hi_ = std::max(level0_z_hi_, double(p.z));
+  }
   if (options_.horizon_culling && !pyramid_.empty())
     horizon_ = std::make_unique<HorizonCulling>(terrain_floors(level0_, pyramid_, kFloorCellLevel), spacing);
 }
@@ -205,25 +218,7 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
   sel_.band_visible = view.box_in_view(band_lo, band_hi);
   // The band target is cleared, drawn and read only inside the band's screen rectangle.
   if (!options_.band_inline) sel_.band_rect = view.screen_rect(band_lo, band_hi);
-  // The seam walls: each spans from the higher of (Level1 edge, Level0
-  // surface) down to a little below the lower one, so no sliver opens where
-  // Level0's surface bends between edge samples.
-  if (!sel_.visible_blocks.empty() && (walls_n_ != n || walls_origin_ != origin)) {
-    if (walls_n_ != n) perimeter_ = level1_perimeter(n);
-    walls_n_ = n;
-    walls_origin_ = origin;
-    constexpr float kBelow = 1.0f;
-    sel_.wall_z.resize(perimeter_.size() * 2);
-    int hint = -1;  // the perimeter walks from sample to neighbouring sample
-    for (size_t k = 0; k < perimeter_.size(); ++k) {
-      const glm::ivec2 s = origin + perimeter_[k];
-      const float h1 = hf.at_clamped(s.x, s.y);
-      const double q = level0_heights_.height_at(s.x, s.y, &hint);
-      const float h0 = std::isfinite(q) ? float(q) : h1;
-      sel_.wall_z[2 * k] = {1.0f, std::max(h0, h1)};
-      sel_.wall_z[2 * k + 1] = {1.0f, std::min(h0, h1) - kBelow};
-    }
-  }
+  if (!sel_.visible_blocks.empty()) update_walls(view);
   // Level0: clusters of the static buffer outside the view are skipped whole;
   // inside the square nothing is drawn; outside it no discard, so the depth
   // test can reject hidden fragments early.
@@ -239,6 +234,53 @@ void TwoLevelSelector::cull(const TwoLevelView& view, const glm::dvec2& eye, con
   clusters_->select(origin, origin + (n - 1), in_view, sel_.level0_runs[0], sel_.level0_runs[1], occlusion,
                     split ? &ring : nullptr, split ? &sel_.level0_runs[2] : nullptr);
   sel_.level0_hidden_clusters = hidden_count;
+}
+
+// The seam walls: each spans from the higher of (Level1 edge, Level0
+// surface) down to a little below the lower one, so no sliver opens where
+// Level0's surface bends between edge samples. Level0's height at an edge
+// sample is a search of its triangles, so only the stretches of the edge
+// that may be in view are filled: a stretch's box spans every height the
+// DEM and Level0 take, and a wall of no height at the lowest of them lies
+// inside it.
+void TwoLevelSelector::update_walls(const TwoLevelView& view) {
+  const auto& hf = hf_;
+  const int n = sel_.n;
+  const glm::ivec2 origin = sel_.origin;
+  constexpr float kBelow = 1.0f;
+  constexpr int q = kLevel1BlockQuads;  // n - 1 is a multiple of it: each stretch lies on one side
+  if (walls_n_ != n || walls_origin_ != origin || stretch_filled_.empty()) {
+    if (walls_n_ != n) perimeter_ = level1_perimeter(n);
+    walls_n_ = n;
+    walls_origin_ = origin;
+    stretch_filled_.assign(perimeter_.size() / q, 0);
+    sel_.wall_z.resize(perimeter_.size() * 2);
+    std::fill(sel_.wall_z.begin(), sel_.wall_z.end(), glm::vec2(1.0f, float(level0_z_lo_)));
+    ++sel_.wall_version;
+  }
+  const size_t count = perimeter_.size();
+  bool changed = false;
+  for (size_t stretch = 0; stretch < stretch_filled_.size(); ++stretch) {
+    if (stretch_filled_[stretch]) continue;
+    const glm::ivec2 a = origin + perimeter_[stretch * q], b = origin + perimeter_[(stretch * q + q) % count];
+    const glm::ivec2 lo = glm::min(a, b), hi = glm::max(a, b);
+    const glm::dvec3 box_lo(lo.x * hf.spacing_x_m, lo.y * hf.spacing_y_m, level0_z_lo_ - kBelow);
+    const glm::dvec3 box_hi(hi.x * hf.spacing_x_m, hi.y * hf.spacing_y_m, level0_z_hi_);
+    if (!view.box_in_view(box_lo - view.position, box_hi - view.position)) continue;
+    stretch_filled_[stretch] = 1;
+    changed = true;
+    int hint = -1;  // the stretch walks from sample to neighbouring sample
+    for (size_t j = stretch * q; j <= stretch * q + q; ++j) {
+      const size_t k = j % count;
+      const glm::ivec2 s = origin + perimeter_[k];
+      const float h1 = hf.at_clamped(s.x, s.y);
+      const double h = level0_heights_.height_at(s.x, s.y, &hint);
+      const float h0 = std::isfinite(h) ? float(h) : h1;
+      sel_.wall_z[2 * k] = {1.0f, std::max(h0, h1)};
+      sel_.wall_z[2 * k + 1] = {1.0f, std::min(h0, h1) - kBelow};
+    }
+  }
+  if (changed) ++sel_.wall_version;
 }
 
 }  // namespace ig::lod

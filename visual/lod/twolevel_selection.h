@@ -8,6 +8,7 @@
 // unit-tested without a context.
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -74,8 +75,11 @@ struct TwoLevelSelection {
   std::array<IndexRuns, 3> level0_runs;
   int level0_hidden_clusters = 0, level1_hidden_blocks = 0;
   // Per wall vertex along level1_perimeter(n), top and bottom: (1, height);
-  // filled when blocks are visible.
+  // filled when blocks are visible, for the stretches of the edge in view
+  // (elsewhere a wall of no height at the lowest terrain). wall_version
+  // changes whenever wall_z does (the passes upload it only then).
   std::vector<glm::vec2> wall_z;
+  std::uint64_t wall_version = 0;
   SceneRequests scene_requests;  // window_set left -1: the method owns its windows
 };
 
@@ -124,12 +128,17 @@ class TwoLevelSelector {
   double level0_resolution_ = 0.0;
   bool band_split_ = true;
   std::vector<glm::dvec3> prediction_rays_;
+  // Fills sel_.wall_z for the edge stretches (one block side each) that
+  // may be in view and are not filled yet for this square.
+  void update_walls(const TwoLevelView& view);
   // The square sel_.wall_z (and perimeter_, of walls_n_) was made for: the
   // walls' heights depend on nothing else (the DEM and Level0 do not
   // change), and the square moves by whole samples, not every frame.
   std::vector<glm::ivec2> perimeter_;
   glm::ivec2 walls_origin_{0};
   int walls_n_ = 0;
+  std::vector<std::uint8_t> stretch_filled_;  // per block side along the perimeter
+  double level0_z_lo_ = 0.0, level0_z_hi_ = 0.0;  // Level0's and the DEM's heights, lowest and highest
   TwoLevelSelection sel_;
 };
 

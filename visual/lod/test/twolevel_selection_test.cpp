@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -196,6 +197,70 @@ TEST(TwoLevelSelection, WallsFollowThePerimeter) {
   ASSERT_EQ(sel.wall_z.size(), 2 * ig::lod::level1_perimeter(sel.n).size());
   for (size_t k = 0; k < sel.wall_z.size(); k += 2) EXPECT_GT(sel.wall_z[k].y, sel.wall_z[k + 1].y);
   EXPECT_EQ(ig::lod::level1_perimeter(33).size(), 4u * 32u);
+}
+
+// Level0's height at an edge sample is a search, so only the stretches of
+// the edge the view may see get walls; the rest have walls of no height,
+// filled when the view turns to them while the square stays put.
+TEST(TwoLevelSelection, WallsAreFilledWhereTheViewMaySeeThem) {
+  const World world;
+  ig::options::TwoLevelOptions options;
+  options.level0_budget = 2048;
+  auto selector = world.selector(options);
+  auto view = view_at(world.hf, 200, 200, 300.0, 45.0, -30.0);
+  // In view: a box with a corner in front of the eye (a half-space, conservative).
+  const glm::dvec3 forward = view.forward;
+  view.box_in_view = [forward](const glm::dvec3& lo, const glm::dvec3& hi) {
+    for (int c = 0; c < 8; ++c)
+      if (glm::dot(glm::dvec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z), forward) > 0.0) return true;
+    return false;
+  };
+  const auto& sel = selector.select(view, 0.5);
+  ASSERT_FALSE(sel.visible_blocks.empty());
+  const auto perimeter = ig::lod::level1_perimeter(sel.n);
+  auto exact = [&](size_t k) {
+    const glm::ivec2 s = sel.origin + perimeter[k];
+    const float h1 = world.hf.at_clamped(s.x, s.y);
+    const double q = selector.level0_heights().height_at(s.x, s.y);
+    const float h0 = std::isfinite(q) ? float(q) : h1;
+    return std::pair<float, float>{std::max(h0, h1), std::min(h0, h1) - 1.0f};
+  };
+  auto in_front = [&](size_t k) {
+    const glm::ivec2 s = sel.origin + perimeter[k];
+    return glm::dot(glm::dvec2(s.x * world.hf.spacing_x_m, s.y * world.hf.spacing_y_m) - glm::dvec2(view.position),
+                    glm::dvec2(forward)) > 0.0;
+  };
+  int filled = 0, empty = 0;
+  for (size_t k = 0; k < perimeter.size(); ++k) {
+    const auto [top, bottom] = exact(k);
+    if (sel.wall_z[2 * k].y == sel.wall_z[2 * k + 1].y) {
+      ++empty;
+      EXPECT_FALSE(in_front(k)) << "sample " << k << ": in front of the eye without a wall";
+    } else {
+      ++filled;
+      EXPECT_EQ(sel.wall_z[2 * k].y, top) << "sample " << k;
+      EXPECT_EQ(sel.wall_z[2 * k + 1].y, bottom) << "sample " << k;
+    }
+  }
+  std::printf("[twolevel_selection] walls filled at %d of %zu edge samples\n", filled, perimeter.size());
+  EXPECT_GT(filled, 0);
+  EXPECT_GT(empty, 0);
+
+  // The same square seen whole: every stretch filled, and a new version to upload.
+  const auto version = sel.wall_version;
+  const glm::ivec2 origin = sel.origin;
+  view.box_in_view = [](const glm::dvec3&, const glm::dvec3&) { return true; };
+  const auto& whole = selector.select(view, 0.5);
+  ASSERT_EQ(whole.origin, origin);
+  EXPECT_NE(whole.wall_version, version);
+  for (size_t k = 0; k < perimeter.size(); ++k) {
+    const auto [top, bottom] = exact(k);
+    EXPECT_EQ(whole.wall_z[2 * k].y, top) << "sample " << k;
+    EXPECT_EQ(whole.wall_z[2 * k + 1].y, bottom) << "sample " << k;
+  }
+  // Nothing new to fill: the version stays (nothing is uploaded again).
+  const auto again = selector.select(view, 0.5).wall_version;
+  EXPECT_EQ(again, whole.wall_version);
 }
 
 // The walls are kept while the square stays put and made again when it
