@@ -146,7 +146,8 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
        "depth_rel_max,psnr_db,holes_mean,hole_fraction,interior_holes_mean,enclosed_holes_mean,bound_px_median,"
        "bound_px_max,vs_invocations_median,fs_invocations_median,primitives_median,draw_calls_median,"
        "upload_bytes_median,cpu_ms_median,temporal_pairs,temporal_error_mean,temporal_error_max,cores_median,"
-       "hidden_boxes_median,passed_per_pixel_median\n";
+       "hidden_boxes_median,passed_per_pixel_median,pipelined_frames,pipelined_frame_ms_median,"
+       "pipelined_frame_ms_p95,pipelined_cpu_ms_median,pipelined_latency_ms_median,pipelined_lod_ms_median\n";
   for (const auto& r : rows) {
     o << csv_field(r.method) << ',' << (r.knob ? csv_field(r.knob->name) : "") << ','
       << (r.knob ? num(r.knob->value) : "") << ',' << (r.knob ? csv_field(r.knob->unit) : "") << ','
@@ -161,9 +162,34 @@ void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows)
       << fmt("%.10g", r.draw_calls_median) << ',' << fmt("%.10g", r.upload_bytes_median) << ','
       << fmt("%.4f", r.cpu_ms_median) << ',' << r.temporal_pairs << ',' << num(r.temporal_error_mean) << ','
       << num(r.temporal_error_max) << ',' << fmt("%.3f", r.cores_median) << ','
-      << fmt("%.10g", r.hidden_boxes_median) << ',' << fmt("%.4f", r.passed_per_pixel_median) << '\n';
+      << fmt("%.10g", r.hidden_boxes_median) << ',' << fmt("%.4f", r.passed_per_pixel_median) << ','
+      << r.pipelined_frames << ',' << fmt("%.4f", r.pipelined_frame_ms_median) << ','
+      << fmt("%.4f", r.pipelined_frame_ms_p95) << ',' << fmt("%.4f", r.pipelined_cpu_ms_median) << ','
+      << fmt("%.4f", r.pipelined_latency_ms_median) << ',' << fmt("%.4f", r.pipelined_lod_ms_median) << '\n';
   }
 }
+
+namespace {
+// Each row flown finished and pipelined, side by side.
+void write_pipelined(std::ostream& o, const std::vector<BenchRow>& rows) {
+  o << "\n## Pipelined: frames in flight\n\n"
+    << "The same frames flown again, each issued while the one before is still drawn (at most "
+       "2 in flight), in stretches of 10 consecutive frames taken in turn by every method and knob, as a live "
+       "IG runs: no stage waits for the GPU, no pipeline statistics are read. Frame ms: from one frame's issue "
+       "to the next one's (what the IG sustains); finished / pipelined: what the overlap buys; CPU ms over "
+       "the same interval; latency: from a frame's issue to its being seen done (an upper bound); LOD ms: "
+       "the LOD step, now sharing the CPU with the frame before.\n\n";
+  table_header(o, {"method", "knob", "finished frame ms", "pipelined frame ms median", "p95", "fps",
+                   "finished / pipelined", "CPU ms", "latency ms", "LOD ms"});
+  for (const auto& r : rows)
+    table_row(o, {r.method, knob_text(r), fmt("%.2f", r.frame_ms_median), fmt("%.2f", r.pipelined_frame_ms_median),
+                  fmt("%.2f", r.pipelined_frame_ms_p95),
+                  fmt("%.1f", r.pipelined_frame_ms_median > 0 ? 1000.0 / r.pipelined_frame_ms_median : 0.0),
+                  fmt("%.2f", r.pipelined_frame_ms_median > 0 ? r.frame_ms_median / r.pipelined_frame_ms_median : 0.0),
+                  fmt("%.2f", r.pipelined_cpu_ms_median), fmt("%.2f", r.pipelined_latency_ms_median),
+                  fmt("%.3f", r.pipelined_lod_ms_median)});
+}
+}  // namespace
 
 void write_bench_markdown(const std::string& path, const BenchContext& c, const std::vector<BenchRow>& rows,
                           std::optional<double> target_px, const std::string& target_source) {
@@ -228,6 +254,8 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
                   fmt("%.0f", r.upload_bytes_median), fmt("%.2f", r.cpu_ms_median), fmt("%.2f", r.cores_median),
                   fmt("%.0f", r.hidden_boxes_median), fmt("%.2f", r.passed_per_pixel_median)});
 
+  if (c.pipelined) write_pipelined(o, rows);
+
   o << "\n## Matched horizon error\n\n";
   if (!target_px) {
     o << "No target: the run has no twolevel row and no --match-px.\n";
@@ -256,6 +284,17 @@ void write_bench_markdown(const std::string& path, const BenchContext& c, const 
   for (size_t k = 0; k < wall.size(); ++k)
     table_row(o, {wall[k].method, matched_ms_text(wall[k]), how_text(wall[k].kind), ratio_text(wall[k]),
                   matched_ms_text(cpu[k]), ratio_text(cpu[k]), temporal_text(temporal[k])});
+
+  if (c.pipelined) {
+    o << "\nPipelined (frames in flight): each method's frame interval and CPU time per frame at the target, "
+         "matched the same way; ratio = method / twolevel.\n\n";
+    table_header(o, {"method", "pipelined frame ms at target", "ratio vs twolevel", "CPU ms at target", "CPU ratio"});
+    const auto pipe = match_horizon_error(rows, *target_px, &BenchRow::pipelined_frame_ms_median);
+    const auto pipe_cpu = match_horizon_error(rows, *target_px, &BenchRow::pipelined_cpu_ms_median);
+    for (size_t k = 0; k < pipe.size(); ++k)
+      table_row(o, {pipe[k].method, matched_ms_text(pipe[k]), ratio_text(pipe[k]), matched_ms_text(pipe_cpu[k]),
+                    ratio_text(pipe_cpu[k])});
+  }
 
   // The same comparison at every two-level setting of a sweep, on CPU time.
   std::vector<const BenchRow*> settings;

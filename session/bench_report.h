@@ -36,6 +36,13 @@ struct BenchRow {
   // Boxes (blocks, chunks, nodes, triangle groups, clusters) left out by
   // horizon culling per frame (the method's hidden_boxes column; 0 without).
   double hidden_boxes_median = 0.0;
+  // Pipelined (ig bench --pipelined): frames issued while the one before is
+  // still drawn. Frame ms: from one frame's issue to the next one's (what
+  // the IG sustains); CPU ms over the same interval; latency: from issue to
+  // seen done. 0 frames: not flown pipelined.
+  int pipelined_frames = 0;
+  double pipelined_frame_ms_median = 0.0, pipelined_frame_ms_p95 = 0.0;
+  double pipelined_cpu_ms_median = 0.0, pipelined_latency_ms_median = 0.0, pipelined_lod_ms_median = 0.0;
   int error_samples = 0;
   double horizon_mean_px = 0.0;  // mean over samples of each frame's column mean
   double horizon_max_px = 0.0;   // max over samples
@@ -97,6 +104,7 @@ struct BenchContext {
   double wall_s = 0.0;
   bool sweep = false;
   bool interleaved = false;  // every frame flown by every method and knob in turn, not one after the other
+  bool pipelined = false;    // every frame flown again with frames in flight (BenchRow::pipelined_*)
 };
 
 void write_bench_csv(const std::string& path, const std::vector<BenchRow>& rows);

@@ -13,7 +13,8 @@ add_test(NAME cli.bench.default_knobs
   COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/bench_default'
     '$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,reference --error-samples 5 --out '${IG_TEST_OUT}/bench_default'
     python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_default' --rows 2 --frames 8 --samples 5 --pairs 4 --methods twolevel,reference")
-set_tests_properties(cli.bench.default_knobs PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok")
+set_tests_properties(cli.bench.default_knobs PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "check_bench_output: ok"
+  FIXTURES_SETUP bench_default_run)
 
 # --sweep: one row per knob value of each method's knob_sweep (plus its
 # default when the sweep lacks it); --frames subsamples, --size / --fov override.
@@ -41,6 +42,16 @@ add_test(NAME cli.bench.interleave
     rows=$(( $(wc -l < '${IG_TEST_OUT}/bench_sweep/results.csv') - 1 ))
     python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_interleave' --rows $rows --frames 6 --samples 6 --pairs 5 --methods twolevel,reference --order interleaved --same-errors-as '${IG_TEST_OUT}/bench_sweep'")
 set_tests_properties(cli.bench.interleave PROPERTIES LABELS cli FIXTURES_REQUIRED bench_sweep_run
+  PASS_REGULAR_EXPRESSION "check_bench_output: ok")
+
+# --pipelined: every frame flown again with frames in flight, in stretches
+# of 10 taken in turn (frames_pipelined.csv, the pipelined tables); the
+# finished frames' images and errors are those of a run without it.
+add_test(NAME cli.bench.pipelined
+  COMMAND bash -c "set -e; rm -rf '${IG_TEST_OUT}/bench_pipelined'
+    '$<TARGET_FILE:ig>' bench '${IG_BENCH_TINY}' --methods twolevel,reference --error-samples 5 --interleave --pipelined --out '${IG_TEST_OUT}/bench_pipelined'
+    python3 '${IG_BENCH_CHECK}' '${IG_TEST_OUT}/bench_pipelined' --rows 2 --frames 8 --samples 5 --pairs 4 --methods twolevel,reference --pipelined --same-errors-as '${IG_TEST_OUT}/bench_default'")
+set_tests_properties(cli.bench.pipelined PROPERTIES LABELS cli FIXTURES_REQUIRED bench_default_run
   PASS_REGULAR_EXPRESSION "check_bench_output: ok")
 
 # Every registered method on a real DEM (skips without IG_DEM_DIR): a short

@@ -28,7 +28,9 @@ COLUMNS = [
     "holes_mean", "hole_fraction", "interior_holes_mean", "enclosed_holes_mean", "bound_px_median",
     "bound_px_max", "vs_invocations_median", "fs_invocations_median", "primitives_median", "draw_calls_median",
     "upload_bytes_median", "cpu_ms_median", "temporal_pairs", "temporal_error_mean", "temporal_error_max",
-    "cores_median", "hidden_boxes_median", "passed_per_pixel_median",
+    "cores_median", "hidden_boxes_median", "passed_per_pixel_median", "pipelined_frames",
+    "pipelined_frame_ms_median", "pipelined_frame_ms_p95", "pipelined_cpu_ms_median",
+    "pipelined_latency_ms_median", "pipelined_lod_ms_median",
 ]
 TEXT = {"method", "knob_name", "knob_unit"}
 MAY_BE_EMPTY = {"knob_value", "bound_px_median", "bound_px_max"}
@@ -96,6 +98,37 @@ def check_order(out_dir, order, variants, frames):
         fail("frames.csv: the frames are not in flight order")
 
 
+def check_pipelined(d, a, rows, md):
+    path = os.path.join(d, "frames_pipelined.csv")
+    if not a.pipelined:
+        if os.path.exists(path) or any(int(r["pipelined_frames"]) != 0 for r in rows):
+            fail("frames were flown pipelined without --pipelined")
+        return
+    with open(path, newline="") as f:
+        frames = list(csv.DictReader(f))
+    for r in rows:
+        mine = [x for x in frames if x["method"] == r["method"] and same_knob(x["knob"], r["knob_value"])]
+        where = f"frames_pipelined.csv ({r['method']} {r['knob_value']})"
+        if len(mine) != a.frames or len({x["frame"] for x in mine}) != a.frames:
+            fail(f"{where}: {len(mine)} rows, expected each of {a.frames} frames once")
+        order = sorted(mine, key=lambda x: int(x["frame"]))
+        for k, x in enumerate(order):
+            first = k % a.stretch == 0
+            if (float(x["interval_ms"]) < 0) != first or (float(x["cpu_ms"]) < 0) != first:
+                fail(f"{where} frame {x['frame']}: an interval is set exactly when it is not a stretch's first")
+            if not float(x["latency_ms"]) > 0 or not float(x["lod_ms"]) >= 0:
+                fail(f"{where} frame {x['frame']}: latency must be > 0 and the LOD step >= 0")
+        if int(r["pipelined_frames"]) != a.frames:
+            fail(f"{where}: results.csv pipelined_frames {r['pipelined_frames']} != {a.frames}")
+        intervals = sorted(float(x["interval_ms"]) for x in mine if float(x["interval_ms"]) >= 0)
+        if intervals and not min(intervals) <= float(r["pipelined_frame_ms_median"]) <= max(intervals):
+            fail(f"{where}: pipelined_frame_ms_median outside its frames' intervals")
+    for needle in ("## Pipelined: frames in flight", "Pipelined (frames in flight)"):
+        if needle not in md:
+            fail(f"results.md lacks {needle!r}")
+    print(f"check_bench_output: {len(frames)} pipelined frames, each once, in stretches of {a.stretch}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("out_dir")
@@ -106,6 +139,8 @@ def main():
     ap.add_argument("--pairs", type=int, required=True, help="temporal error pairs per method/knob")
     ap.add_argument("--order", choices=("sequential", "interleaved"), help="frames.csv's expected row order")
     ap.add_argument("--same-errors-as", metavar="DIR", help="another run whose samples.csv must match but for timing")
+    ap.add_argument("--pipelined", action="store_true", help="the run flew every frame pipelined too")
+    ap.add_argument("--stretch", type=int, default=10, help="consecutive frames per pipelined stretch")
     a = ap.parse_args()
     d = a.out_dir
 
@@ -217,6 +252,7 @@ def main():
     if "temporal error mean / max" not in md:
         fail("results.md lacks the temporal error column")
 
+    check_pipelined(d, a, rows, md)
     if a.order:
         check_order(d, a.order, a.rows, a.frames)
         print(f"check_bench_output: frames.csv is {a.order}")

@@ -44,8 +44,8 @@ using session::match_horizon_error;
 
 constexpr const char* kUsage =
     "usage: ig bench SCENARIO.json [--methods LIST|all] [--sweep] [--frames N] [--size WxH] [--fov DEG]\n"
-    "                [--error-samples N] [--match-px PX] [--skip-pass NAME] [--interleave] [--shader-dir DIR]\n"
-    "                [--out DIR]\n"
+    "                [--error-samples N] [--match-px PX] [--skip-pass NAME] [--interleave] [--pipelined]\n"
+    "                [--shader-dir DIR] [--out DIR]\n"
     "Flies every LOD method along the scenario's path and reports frame time against image error\n"
     "versus the reference renderer (docs/bench.md): results.csv, results.md, error_vs_time.png,\n"
     "temporal_error.png.\n"
@@ -66,6 +66,7 @@ struct Args {
   std::vector<std::string> skip_passes;  // --skip-pass (twolevel cost breakdown)
   std::string horizon_culling;           // --horizon-culling on|off for every method ("": the scenario's)
   bool interleave = false;               // every frame flown by every variant in turn
+  bool pipelined = false;                // every frame flown again with frames in flight
   std::string shader_dir;
   std::string out_dir;
   std::string command_line;  // as typed, for the report
@@ -136,6 +137,11 @@ Args parse_args(const std::vector<std::string>& a) {
                "fly every frame with every method and knob in turn (all built first), so that a drift of the "
                "machine's speed or the GPU's clock during the run reaches them alike (default: one after the "
                "other)");
+  app.add_flag("--pipelined", args.pipelined,
+               "fly every frame a second time pipelined, each issued while the one before is still drawn (as a "
+               "live IG with frames in flight runs), in stretches of consecutive frames taken in turn by every "
+               "method and knob: frame interval, CPU time and latency in results.md and frames_pipelined.csv "
+               "(default: only each frame finished before the next)");
   add_shader_dir_option(app, args.shader_dir);
   app.add_option("--out", args.out_dir, "output folder (default out/<scenario>_bench)")->option_text("DIR");
   parse_command_line(app, a);
@@ -303,6 +309,8 @@ int run(const Args& args) {
   flight.time_step_s = s.time_step_s;
   flight.frames_csv = &frames_csv;
   flight.samples_csv = &samples_csv;
+  std::optional<stats::FrameLog> pipelined_csv;
+  if (args.pipelined) flight.pipelined_csv = &pipelined_csv.emplace((out / "frames_pipelined.csv").string());
 
   std::vector<BenchRow> rows;
   auto report = [&](const VariantRun& r, const BenchRow& row) {
@@ -315,6 +323,20 @@ int run(const Args& args) {
     progress.line(buf);
   };
   const int n_frames = int(frames.size());
+  // Pipelined: the frames again in stretches of consecutive positions, each
+  // stretch flown by every run in turn (the first rotating) and drained
+  // before the next run's, so a drift of the machine reaches them alike.
+  constexpr int kStretch = 10;
+  auto fly_pipelined = [&](const std::vector<VariantRun*>& runs) {
+    if (!args.pipelined) return;
+    const int n = int(runs.size());
+    for (int i0 = 0, s = 0; i0 < n_frames; i0 += kStretch, ++s)
+      for (int k = 0; k < n; ++k) {
+        VariantRun& r = *runs[(s + k) % n];
+        for (int i = i0; i < std::min(i0 + kStretch, n_frames); ++i) r.fly_pipelined(i);
+        r.end_pipelined();
+      }
+  };
   if (!args.interleave) {
     for (const Variant& v : variants) {
       VariantRun r(v, flight);
@@ -323,6 +345,7 @@ int run(const Args& args) {
         r.fly(i);
         progress.step(r.label(), i + 1, n_frames);
       }
+      fly_pipelined({&r});
       rows.push_back(r.finish());
       report(r, rows.back());
     }
@@ -339,6 +362,9 @@ int run(const Args& args) {
         r.fly(i);
         progress.step(r.label(), i + 1, n_frames);
       }
+    std::vector<VariantRun*> all;
+    for (auto& r : runs) all.push_back(r.get());
+    fly_pipelined(all);
     for (auto& r : runs) {
       rows.push_back(r->finish());
       report(*r, rows.back());
@@ -379,6 +405,7 @@ int run(const Args& args) {
   for (int p : before_pos) c.temporal_before_indices.push_back(frames[p]);
   c.sweep = args.sweep;
   c.interleaved = args.interleave;
+  c.pipelined = args.pipelined;
   c.wall_s = ms_since(start) / 1000.0;
 
   write_bench_csv((out / "results.csv").string(), rows);

@@ -12,7 +12,6 @@
 namespace ig::app {
 namespace {
 
-using Clock = stats::WallClock;
 using stats::ms_since;
 using stats::process_cpu_ms;
 
@@ -120,6 +119,70 @@ void VariantRun::render_and_compare(int pos) {
   if (f.before_pos.count(pos)) method_before_[pos] = std::move(luma);
 }
 
+void VariantRun::fly_pipelined(int pos) {
+  const BenchFlight& f = flight_;
+  const auto t0 = Clock::now();
+  renderer_->set_pipelined(true);
+  // A frame waits only for the one kFramesInFlight before it.
+  while (int(in_flight_.size()) >= kFramesInFlight) retire_done(true);
+  const auto issued = Clock::now();
+  const double cpu0 = process_cpu_ms();
+  InFlight frame;
+  frame.issued = issued;
+  frame.frame = f.frames[pos];
+  if (last_issue_) {
+    frame.interval_ms = std::chrono::duration<double, std::milli>(issued - *last_issue_).count();
+    frame.cpu_ms = cpu0 - last_issue_cpu_ms_;
+  }
+  last_issue_ = issued;
+  last_issue_cpu_ms_ = cpu0;
+  const render::ViewResult vr = session::render_view(*f.scene, *renderer_, f.camera_at(f.frames[pos]), *f.target);
+  frame.lod_ms = vr.timings.lod_ms;
+  frame.fence = gl::FrameFence::after_issued_work();
+  in_flight_.push_back(std::move(frame));
+  retire_done(false);
+  renderer_->set_pipelined(false);
+  spent_ms_ += ms_since(t0);
+}
+
+void VariantRun::end_pipelined() {
+  const auto t0 = Clock::now();
+  while (!in_flight_.empty()) retire_done(true);
+  last_issue_.reset();
+  spent_ms_ += ms_since(t0);
+}
+
+// Frames seen done leave the queue, oldest first; their latency is from
+// being issued to being seen done (an upper bound: a frame is looked at
+// after each issue and when the next must wait for it).
+void VariantRun::retire_done(bool wait_oldest) {
+  while (!in_flight_.empty()) {
+    InFlight& f = in_flight_.front();
+    if (wait_oldest) {
+      f.fence.wait();
+      wait_oldest = false;
+    } else if (!f.fence.done()) {
+      return;
+    }
+    const double latency = ms_since(f.issued);
+    pipe_latency_ms_.push_back(latency);
+    pipe_lod_ms_.push_back(f.lod_ms);
+    if (f.interval_ms >= 0.0) {
+      pipe_interval_ms_.push_back(f.interval_ms);
+      pipe_cpu_ms_.push_back(f.cpu_ms);
+    }
+    if (flight_.pipelined_csv)
+      flight_.pipelined_csv->add_row({{"method", variant_.method},
+                                      knob_cell_,
+                                      {"frame", f.frame},
+                                      {"interval_ms", f.interval_ms},
+                                      {"cpu_ms", f.cpu_ms},
+                                      {"latency_ms", latency},
+                                      {"lod_ms", f.lod_ms}});
+    in_flight_.pop_front();
+  }
+}
+
 session::BenchRow VariantRun::finish() {
   session::BenchRow row = row_;
   row.frames = int(frame_ms_.size());
@@ -137,6 +200,15 @@ session::BenchRow VariantRun::finish() {
   row.primitives_median = stats::percentiles(prims_).median;
   row.draw_calls_median = stats::percentiles(draws_).median;
   row.upload_bytes_median = stats::percentiles(uploads_).median;
+  if (!pipe_latency_ms_.empty()) {
+    row.pipelined_frames = int(pipe_latency_ms_.size());
+    const auto interval = stats::percentiles(pipe_interval_ms_);
+    row.pipelined_frame_ms_median = interval.median;
+    row.pipelined_frame_ms_p95 = interval.p95;
+    row.pipelined_cpu_ms_median = stats::percentiles(pipe_cpu_ms_).median;
+    row.pipelined_latency_ms_median = stats::percentiles(pipe_latency_ms_).median;
+    row.pipelined_lod_ms_median = stats::percentiles(pipe_lod_ms_).median;
+  }
   samples_.finish(row);
   return row;
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <chrono>
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/frame_fence.h"
 #include "render/camera.h"
 #include "render/frame_renderer.h"
 #include "render/terrain_method.h"
@@ -29,6 +31,8 @@ class RenderTarget;
 }
 
 namespace ig::app {
+
+using Clock = stats::WallClock;
 
 // One method at one knob value to run.
 struct Variant {
@@ -53,6 +57,7 @@ struct BenchFlight {
   int width = 0, height = 0;
   double time_step_s = 0.0;
   stats::FrameLog* frames_csv = nullptr;
+  stats::FrameLog* pipelined_csv = nullptr;  // frames flown pipelined (ig bench --pipelined)
   stats::FrameLog* samples_csv = nullptr;
 };
 
@@ -70,6 +75,13 @@ class VariantRun {
   // Positions must come in increasing order (temporal pairs and incremental
   // methods rely on it).
   void fly(int pos);
+  // Renders the frame at position `pos` pipelined (gl::FrameFence): issued
+  // while up to kFramesInFlight - 1 earlier ones are still being drawn, as a
+  // live IG with frames in flight runs. Timed, not compared. A run of
+  // consecutive positions is one stretch; end_pipelined() drains it.
+  static constexpr int kFramesInFlight = 2;
+  void fly_pipelined(int pos);
+  void end_pipelined();
   // The row of medians and errors; call once, after the last fly().
   session::BenchRow finish();
   // Wall time this variant took so far: its build, warm-up and frames
@@ -91,6 +103,19 @@ class VariantRun {
   std::vector<double> frame_ms_, cpu_ms_, cores_, hidden_, lod_ms_, triangles_, vs_, fs_, passed_, prims_, draws_,
       uploads_;
   std::map<int, stats::LumaImage> method_before_;  // the method's images of the frames before samples
+  // Pipelined frames: issued, not yet seen done (oldest first).
+  struct InFlight {
+    gl::FrameFence fence;
+    Clock::time_point issued;
+    int frame = 0;
+    double lod_ms = 0.0;
+    double interval_ms = -1.0, cpu_ms = -1.0;  // from the frame issued before it in the stretch
+  };
+  void retire_done(bool wait_oldest);
+  std::deque<InFlight> in_flight_;
+  std::optional<Clock::time_point> last_issue_;
+  double last_issue_cpu_ms_ = 0.0;
+  std::vector<double> pipe_interval_ms_, pipe_cpu_ms_, pipe_latency_ms_, pipe_lod_ms_;
   size_t next_sample_ = 0;
   int last_pos_ = -1;
 };

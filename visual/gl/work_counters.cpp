@@ -48,7 +48,8 @@ void PassRecorder::begin(std::string_view pass, bool count_samples) {
     glFinish();
     s.start = stats::WallClock::now();
   }
-  if (supported_)
+  s.queried = supported_ && queries_;
+  if (s.queried)
     for (int q = 0; q < queries_of(count_samples); ++q) glBeginQuery(kTargets[q], s.queries[q].id());
   active_ = true;
 }
@@ -56,7 +57,7 @@ void PassRecorder::begin(std::string_view pass, bool count_samples) {
 void PassRecorder::end() {
   if (!active_) return;
   Segment& s = segments_[used_];
-  if (supported_)
+  if (s.queried)
     for (int q = 0; q < queries_of(s.count_samples); ++q) glEndQuery(kTargets[q]);
   s.tally_at_end = work_tally();
   if (timed_) {
@@ -77,7 +78,7 @@ std::vector<PassWork> PassRecorder::read() {
   for (int k = 0; k < used_; ++k) {
     const Segment& s = segments_[k];
     PassWork& w = out[s.pass];
-    if (supported_) {
+    if (s.queried) {
       GLuint64 v[4] = {0, 0, 0, 0};
       for (int q = 0; q < queries_of(s.count_samples); ++q)
         glGetQueryObjectui64v(s.queries[q].id(), GL_QUERY_RESULT, &v[q]);

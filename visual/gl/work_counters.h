@@ -71,6 +71,10 @@ class PassRecorder {
   // time is its own work alone (GL timer queries do not time passes on
   // llvmpipe). The waits serialise the frame, which then takes longer.
   void set_timed(bool on) { timed_ = on; }
+  // Pipeline statistics and samples-passed queries on (the default) or off:
+  // reading them waits for the frame, which frames in flight must not do
+  // (draw calls and uploads are still tallied). Between frames only.
+  void set_queries(bool on) { queries_ = on; }
   // Another set of passes (the renderer's method changed).
   void reset_passes(std::vector<std::string> pass_names) {
     if (active_) end();
@@ -82,6 +86,7 @@ class PassRecorder {
   struct Segment {
     int pass = 0;
     bool count_samples = true;
+    bool queried = false;  // its queries ran
     std::array<Query, 4> queries;  // vertex and fragment invocations, primitives, samples passed
     WorkTally tally_at_begin, tally_at_end;
     stats::WallClock::time_point start;
@@ -93,6 +98,7 @@ class PassRecorder {
   bool active_ = false;
   bool supported_ = false;
   bool timed_ = false;
+  bool queries_ = true;
 };
 
 }  // namespace ig::gl

@@ -98,8 +98,12 @@ void FrameRenderer::draw_clouds(const Camera& camera, const gl::RenderTarget& ta
   view.fog_colour = scene_.sky_light().sky_horizon;
   const auto frame = environment::cloud_frame(scene_.clouds(), camera.position, scene_.time_s(), scene_.sky_light());
   clouds_->draw(frame, view, target, recorder_);
-  gl::finish();
+  end_stage();
   r.timings.clouds_ms = ms_since(t0);
+}
+
+void FrameRenderer::end_stage() const {
+  if (!pipelined_) gl::finish();
 }
 
 ViewSelection FrameRenderer::select(const Camera& world_camera, const gl::RenderTarget& target) {
@@ -147,12 +151,12 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   }
   // Entities over the terrain as drawn (depth-tested against it), lit as it.
   if (entities_) r.entities = entities_->draw(camera, selection.world_eye, scene_, target, recorder_);
-  gl::finish();
+  end_stage();
   r.timings.terrain_ms = ms_since(t0);
 
   t0 = Clock::now();
   sky_.draw(glm::inverse(camera.view_projection()), scene_.sky_light(), recorder_);
-  gl::finish();
+  end_stage();
   r.timings.sky_ms = ms_since(t0);
   // The clouds blend over the single-sampled picture: a multisampled frame's
   // after its resolve, a post-filtered one's before its filter.
@@ -160,14 +164,14 @@ ViewResult FrameRenderer::draw(const ViewSelection& selection, const gl::RenderT
   if (target.samples() > 1) {
     t0 = Clock::now();
     target.resolve();
-    gl::finish();
+    end_stage();
     r.timings.resolve_ms = ms_since(t0);
   }
   if (clouds) draw_clouds(camera, target, r);
   if (target.post_pass()) {
     t0 = Clock::now();
     post_filter_.run(target, recorder_);
-    gl::finish();
+    end_stage();
     r.timings.resolve_ms = ms_since(t0);
   }
   r.passes = recorder_.read();

@@ -76,6 +76,14 @@ class FrameRenderer {
   // Each pass's own wall time in ViewResult::passes (gl::PassRecorder::set_timed):
   // a diagnostic that finishes the GL work around every pass, so frames take longer.
   void set_pass_times(bool on) { recorder_.set_timed(on); }
+  // Pipelined frames: no stage waits for the GL (each stage's time is then
+  // the time to issue it) and no pipeline statistics are read, so the
+  // caller can issue the next frame while this one is drawn (gl::FrameFence).
+  // Off by default: every stage finished and timed.
+  void set_pipelined(bool on) {
+    pipelined_ = on;
+    recorder_.set_queries(!on);
+  }
   // Draw with another method from the next frame on (a rebuild at a frame
   // boundary): the sky program and the rest are kept, not recompiled; the
   // shading settings are taken again, as the constructor takes them.
@@ -120,6 +128,8 @@ class FrameRenderer {
   bool wireframe_ = false;
   bool back_face_culling_ = true;
   bool clouds_may_come_ = false;
+  bool pipelined_ = false;
+  void end_stage() const;  // gl::finish unless pipelined
   bool scene_had_clouds_ = false;  // when the pass list was last made
 };
 
