@@ -1,6 +1,7 @@
 #include "lod/horizon_culling.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -45,19 +46,26 @@ HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int b
 
 HorizonCulling::Extent HorizonCulling::extent_of(const glm::dvec2& eye, const glm::dvec2& lo,
                                                  const glm::dvec2& hi) const {
-  const double nx = std::max({lo.x - eye.x, 0.0, eye.x - hi.x}), ny = std::max({lo.y - eye.y, 0.0, eye.y - hi.y});
-  const double fx = std::max(std::abs(lo.x - eye.x), std::abs(hi.x - eye.x));
-  const double fy = std::max(std::abs(lo.y - eye.y), std::abs(hi.y - eye.y));
+  const double dx0 = lo.x - eye.x, dx1 = hi.x - eye.x, dy0 = lo.y - eye.y, dy1 = hi.y - eye.y;
+  return extent_from_corners(dx0, dx1, dy0, dy1,
+                             {pseudo_angle(dx0, dy0), pseudo_angle(dx1, dy0), pseudo_angle(dx0, dy1),
+                              pseudo_angle(dx1, dy1)});
+}
+
+HorizonCulling::Extent HorizonCulling::extent_from_corners(double dx0, double dx1, double dy0, double dy1,
+                                                           const std::array<double, 4>& angle) const {
+  const double nx = std::max({dx0, 0.0, -dx1}), ny = std::max({dy0, 0.0, -dy1});
+  const double fx = std::max(std::abs(dx0), std::abs(dx1));
+  const double fy = std::max(std::abs(dy0), std::abs(dy1));
   const double near = std::sqrt(nx * nx + ny * ny), far = std::sqrt(fx * fx + fy * fy);
   double angle_lo = 0.0, angle_hi = 4.0;  // the eye is over it: every direction
   if (near > 0.0) {
     // The eye is outside the rectangle, which therefore spans less than half
     // a turn: the corners' directions relative to the first one bound it.
-    const double a0 = pseudo_angle(lo.x - eye.x, lo.y - eye.y);
+    const double a0 = angle[0];
     double dlo = 0.0, dhi = 0.0;
     for (int k = 1; k < 4; ++k) {
-      const glm::dvec2 c(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y);
-      double d = pseudo_angle(c.x - eye.x, c.y - eye.y) - a0;
+      double d = angle[size_t(k)] - a0;
       if (d > 2.0) d -= 4.0;
       if (d < -2.0) d += 4.0;
       dlo = std::min(dlo, d);
@@ -89,6 +97,30 @@ bool each_bin(long k0, long k1, int bins, F f) {
   return true;
 }
 }  // namespace
+
+bool HorizonCulling::reaches_beyond(long k0, long k1, double far) const {
+  const int bins = int(horizon_.size());
+  if (k1 < k0) return false;
+  if (k1 - k0 + 1 >= bins) k1 = k0 + bins - 1;
+  long b = k0;
+  while (b < 0) b += bins;
+  while (b >= bins) b -= bins;
+  for (long k = k0; k <= k1;) {
+    // A whole run of kCoarse bins at once: any bin in it reaching beyond
+    // `far` answers true, none lets the run be skipped.
+    if (b % kCoarse == 0 && k + kCoarse - 1 <= k1 && b + kCoarse <= bins) {
+      if (coarse_reach_[size_t(b / kCoarse)] > far) return true;
+      k += kCoarse;
+      b += kCoarse;
+    } else {
+      if (reach_[size_t(b)] > far) return true;
+      ++k;
+      ++b;
+    }
+    if (b >= bins) b -= bins;
+  }
+  return false;
+}
 
 void HorizonCulling::raise(const Extent& e, double slope) {
   each_bin(e.inside_lo, e.inside_hi, int(horizon_.size()), [&](size_t b) {
@@ -125,6 +157,9 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
       return true;
     });
   }
+  // Per run of kCoarse bins the farthest reach in it, for matters().
+  coarse_reach_.assign((size_t(bins) + kCoarse - 1) / kCoarse, -1.0);
+  for (int b = 0; b < bins; ++b) coarse_reach_[size_t(b / kCoarse)] = std::max(coarse_reach_[size_t(b / kCoarse)], reach_[size_t(b)]);
   // Distances in rings of this width: a floor is swept before a box when
   // its ring is nearer than the box's (a counting sort, not a full sort).
   const double ring = std::max(farthest_box, 1.0) / kRings;
@@ -133,15 +168,14 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   // Whether a floor ending at distance `far` and raising the bins of
   // [lo, hi) can change any box's test: some box spanning one of those bins
   // lies beyond it (a floor is swept only before boxes beyond its far end).
-  auto matters = [&](const Extent& e, double far) {
-    return !each_bin(e.inside_lo, e.inside_hi, bins, [&](size_t b) { return reach_[b] <= far; });
-  };
+  auto matters = [&](const Extent& e, double far) { return reaches_beyond(e.inside_lo, e.inside_hi, far); };
 
   // Floors in order of their farthest point: a floor is used only for boxes
   // wholly beyond it, so where a line passes under it, that is in front of
   // the box. Floors beyond every box, or in no box's directions, cannot matter.
   cells_.clear();
-  cell_extent_.resize(floors_.floor_m.size());
+  cell_extent_.clear();
+  cell_floor_.clear();
   const int s = floors_.cell_samples;
   auto cell_x = [&](int i) { return std::min(i * s, floors_.grid_cells_x) * spacing_.x; };
   auto cell_y = [&](int j) { return std::min(j * s, floors_.grid_cells_y) * spacing_.y; };
@@ -158,14 +192,29 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
       const Extent g = extent_of(eye2, {cell_x(gi), gy0}, {cell_x(gi1), gy1});
       if (g.near > farthest_box) continue;
       if (g.near > 0.0 && !matters(g, g.near)) continue;
+      // The group's cell corners relative to the eye and their directions,
+      // each computed once for the up to four cells that share it.
+      std::array<double, kGroup + 1> dx{}, dy{};
+      std::array<double, (kGroup + 1) * (kGroup + 1)> angle{};
+      for (int i = gi; i <= gi1; ++i) dx[size_t(i - gi)] = cell_x(i) - eye.x;
+      for (int j = gj; j <= gj1; ++j) dy[size_t(j - gj)] = cell_y(j) - eye.y;
+      for (int j = 0; j <= gj1 - gj; ++j)
+        for (int i = 0; i <= gi1 - gi; ++i)
+          angle[size_t(j * (kGroup + 1) + i)] = pseudo_angle(dx[size_t(i)], dy[size_t(j)]);
       for (int j = gj; j < gj1; ++j) {
-        const double y0 = cell_y(j), y1 = cell_y(j + 1);
+        const size_t r = size_t(j - gj);
         for (int i = gi; i < gi1; ++i) {
+          const size_t c = size_t(i - gi);
           const auto idx = std::uint32_t(j * floors_.nx + i);
-          const Extent& e = cell_extent_[idx] = extent_of(eye2, {cell_x(i), y0}, {cell_x(i + 1), y1});
+          const Extent e = extent_from_corners(
+              dx[c], dx[c + 1], dy[r], dy[r + 1],
+              {angle[r * (kGroup + 1) + c], angle[r * (kGroup + 1) + c + 1], angle[(r + 1) * (kGroup + 1) + c],
+               angle[(r + 1) * (kGroup + 1) + c + 1]});
           if (e.near < min_distance_m || e.far > farthest_box) continue;
           if (!matters(e, e.far)) continue;
-          cells_.push_back({e.far, idx});
+          cells_.push_back({e.far, std::uint32_t(cell_extent_.size())});
+          cell_extent_.push_back(e);
+          cell_floor_.push_back(floors_.floor_m[idx]);
         }
       }
     }
@@ -178,11 +227,11 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   for (const Order& b : box_order_) {
     for (const int box_ring = ring_of(b.distance); next_cell < cells_.size() && ring_of(cells_[next_cell].distance) < box_ring;
          ++next_cell) {
-      const auto idx = cells_[next_cell].index;
-      const Extent& e = cell_extent_[idx];
+      const auto k = cells_[next_cell].index;
+      const Extent& e = cell_extent_[k];
       // The floor as drawn, lowest at the cell's far corner; a line at this
       // slope or lower in any direction inside the cell passes under it.
-      const double rise = floors_.floor_m[idx] - kMarginM - terrain::curvature_drop(e.far, earth_radius_m) - eye.z;
+      const double rise = cell_floor_[k] - kMarginM - terrain::curvature_drop(e.far, earth_radius_m) - eye.z;
       raise(e, rise / (rise < 0.0 ? e.near : e.far));
     }
     const Extent& e = box_extent_[b.index];

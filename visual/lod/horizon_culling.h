@@ -16,6 +16,7 @@
 // from behind ridges; every hidden triangle still costs vertex and set-up
 // work on any GPU. No GL here.
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -54,13 +55,21 @@ class HorizonCulling {
     long touch_lo, touch_hi, inside_lo, inside_hi;
   };
   Extent extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi) const;
+  // The same from the rectangle's sides relative to the eye (x: dx0 < dx1,
+  // y: dy0 < dy1) and its corners' pseudo-angles, (x0, y0), (x1, y0),
+  // (x0, y1), (x1, y1): neighbouring cells share corners.
+  Extent extent_from_corners(double dx0, double dx1, double dy0, double dy1, const std::array<double, 4>& angle) const;
   void raise(const Extent& e, double slope);           // bins wholly inside e's directions
   bool under(const Extent& e, double slope) const;     // every bin e's directions touch
+  // Some bin of k0..k1 (unwrapped) has a reach beyond `far`.
+  bool reaches_beyond(long k0, long k1, double far) const;
 
   TerrainFloors floors_;
   glm::dvec2 spacing_;
   std::vector<double> horizon_;  // per bin: a line under this slope passes under some floor swept
   std::vector<double> reach_;    // per bin: the nearest distance of the farthest box spanning it
+  static constexpr int kCoarse = 32;
+  std::vector<double> coarse_reach_;  // per run of kCoarse bins: the farthest reach in it
   struct Order {
     double distance;
     std::uint32_t index;
@@ -70,7 +79,8 @@ class HorizonCulling {
   std::vector<std::uint32_t> ring_start_;
   template <class RingOf>
   void bucket_by_ring(std::vector<Order>& items, RingOf ring_of);
-  std::vector<Extent> cell_extent_, box_extent_;
+  std::vector<Extent> cell_extent_, box_extent_;  // the cells kept for the sweep, in the order found; per box
+  std::vector<double> cell_floor_;                 // the kept cells' floors
 };
 
 // A selection's optional occlusion step: given the boxes in view, marks the
