@@ -185,29 +185,30 @@ void VariantRun::retire_done(bool wait_oldest) {
 
 session::BenchRow VariantRun::finish() {
   session::BenchRow row = row_;
+  auto median = [](const std::vector<double>& v) { return stats::percentiles(v).median; };
   row.frames = int(frame_ms_.size());
   const auto frame_ms = stats::percentiles(frame_ms_);
   row.frame_ms_median = frame_ms.median;
   row.frame_ms_p95 = frame_ms.p95;
-  row.lod_ms_median = stats::percentiles(lod_ms_).median;
-  row.cpu_ms_median = stats::percentiles(cpu_ms_).median;
-  row.cores_median = stats::percentiles(cores_).median;
-  row.hidden_boxes_median = stats::percentiles(hidden_).median;
-  row.triangles_median = stats::percentiles(triangles_).median;
-  row.vs_invocations_median = stats::percentiles(vs_).median;
-  row.fs_invocations_median = stats::percentiles(fs_).median;
-  row.passed_per_pixel_median = stats::percentiles(passed_).median;
-  row.primitives_median = stats::percentiles(prims_).median;
-  row.draw_calls_median = stats::percentiles(draws_).median;
-  row.upload_bytes_median = stats::percentiles(uploads_).median;
+  row.lod_ms_median = median(lod_ms_);
+  row.cpu_ms_median = median(cpu_ms_);
+  row.cores_median = median(cores_);
+  row.hidden_boxes_median = median(hidden_);
+  row.triangles_median = median(triangles_);
+  row.vs_invocations_median = median(vs_);
+  row.fs_invocations_median = median(fs_);
+  row.passed_per_pixel_median = median(passed_);
+  row.primitives_median = median(prims_);
+  row.draw_calls_median = median(draws_);
+  row.upload_bytes_median = median(uploads_);
   if (!pipe_latency_ms_.empty()) {
     row.pipelined_frames = int(pipe_latency_ms_.size());
     const auto interval = stats::percentiles(pipe_interval_ms_);
     row.pipelined_frame_ms_median = interval.median;
     row.pipelined_frame_ms_p95 = interval.p95;
-    row.pipelined_cpu_ms_median = stats::percentiles(pipe_cpu_ms_).median;
-    row.pipelined_latency_ms_median = stats::percentiles(pipe_latency_ms_).median;
-    row.pipelined_lod_ms_median = stats::percentiles(pipe_lod_ms_).median;
+    row.pipelined_cpu_ms_median = median(pipe_cpu_ms_);
+    row.pipelined_latency_ms_median = median(pipe_latency_ms_);
+    row.pipelined_lod_ms_median = median(pipe_lod_ms_);
   }
   samples_.finish(row);
   return row;
