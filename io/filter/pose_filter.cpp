@@ -186,7 +186,7 @@ bool PoseFilter::insert_sorted(const Entry& e) {
 }
 
 std::optional<std::uint32_t> PoseFilter::clock_sequence(const PoseSample& s) {
-  if (s.sequence || !s.velocity_mps) return s.sequence;
+  if (clock_counter_unit(s) == CounterUnit::SenderPackets) return s.sequence;
   return motion_.next(s.position, *s.velocity_mps, s.receive_time_s, sender_clock_.period_s());
 }
 

@@ -64,16 +64,16 @@ TwoLevelSelector::TwoLevelSelector(const terrain::Heightfield& hf, const terrain
   clusters_ = std::make_unique<Level0Clusters>(level0_, spacing);
   // Every height the walls can take: the DEM's (its statistics and its
   // pyramid's root) and Level0's (lifted or not).
-  level0_z_lo_ = hf.min_m;
-  level0_z_hi_ = hf.max_m;
+  terrain_z_lo_ = hf.min_m;
+  terrain_z_hi_ = hf.max_m;
   if (!pyramid_.empty()) {
     const auto root = pyramid_.node(pyramid_.num_levels() - 1, 0, 0);
-    level0_z_lo_ = std::min(level0_z_lo_, double(root.lo));
-    level0_z_hi_ = std::max(level0_z_hi_, double(root.hi));
+    terrain_z_lo_ = std::min(terrain_z_lo_, double(root.lo));
+    terrain_z_hi_ = std::max(terrain_z_hi_, double(root.hi));
   }
   for (const auto& p : level0_.positions) {
-    level0_z_lo_ = std::min(level0_z_lo_, double(p.z));
-    level0_z_hi_ = std::max(level0_z_hi_, double(p.z));
+    terrain_z_lo_ = std::min(terrain_z_lo_, double(p.z));
+    terrain_z_hi_ = std::max(terrain_z_hi_, double(p.z));
   }
   if (options_.horizon_culling && !pyramid_.empty())
     horizon_ = std::make_unique<HorizonCulling>(terrain_floors(level0_, pyramid_, kFloorCellLevel), spacing);
@@ -249,13 +249,13 @@ void TwoLevelSelector::update_walls(const TwoLevelView& view) {
   const glm::ivec2 origin = sel_.origin;
   constexpr float kBelow = 1.0f;
   constexpr int q = kLevel1BlockQuads;  // n - 1 is a multiple of it: each stretch lies on one side
-  if (walls_n_ != n || walls_origin_ != origin || stretch_filled_.empty()) {
+  if (walls_n_ != n || walls_origin_ != origin) {
     if (walls_n_ != n) perimeter_ = level1_perimeter(n);
     walls_n_ = n;
     walls_origin_ = origin;
     stretch_filled_.assign(perimeter_.size() / q, 0);
     sel_.wall_z.resize(perimeter_.size() * 2);
-    std::fill(sel_.wall_z.begin(), sel_.wall_z.end(), glm::vec2(1.0f, float(level0_z_lo_)));
+    std::fill(sel_.wall_z.begin(), sel_.wall_z.end(), glm::vec2(1.0f, float(terrain_z_lo_)));
     ++sel_.wall_version;
   }
   const size_t count = perimeter_.size();
@@ -264,8 +264,8 @@ void TwoLevelSelector::update_walls(const TwoLevelView& view) {
     if (stretch_filled_[stretch]) continue;
     const glm::ivec2 a = origin + perimeter_[stretch * q], b = origin + perimeter_[(stretch * q + q) % count];
     const glm::ivec2 lo = glm::min(a, b), hi = glm::max(a, b);
-    const glm::dvec3 box_lo(lo.x * hf.spacing_x_m, lo.y * hf.spacing_y_m, level0_z_lo_ - kBelow);
-    const glm::dvec3 box_hi(hi.x * hf.spacing_x_m, hi.y * hf.spacing_y_m, level0_z_hi_);
+    const glm::dvec3 box_lo(lo.x * hf.spacing_x_m, lo.y * hf.spacing_y_m, terrain_z_lo_ - kBelow);
+    const glm::dvec3 box_hi(hi.x * hf.spacing_x_m, hi.y * hf.spacing_y_m, terrain_z_hi_);
     if (!view.box_in_view(box_lo - view.position, box_hi - view.position)) continue;
     stretch_filled_[stretch] = 1;
     changed = true;

@@ -138,7 +138,7 @@ class TwoLevelSelector {
   glm::ivec2 walls_origin_{0};
   int walls_n_ = 0;
   std::vector<std::uint8_t> stretch_filled_;  // per block side along the perimeter
-  double level0_z_lo_ = 0.0, level0_z_hi_ = 0.0;  // Level0's and the DEM's heights, lowest and highest
+  double terrain_z_lo_ = 0.0, terrain_z_hi_ = 0.0;  // Level0's and the DEM's heights, lowest and highest
   TwoLevelSelection sel_;
 };
 
