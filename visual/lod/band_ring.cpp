@@ -12,7 +12,8 @@ bool BandRing::may_reach(glm::ivec2 piece_lo, glm::ivec2 piece_hi, double z_lo, 
   // curvature's drop (d^2 / 2R) counted twice over for margin.
   const glm::dvec2 a = glm::dvec2(piece_lo) * spacing - glm::dvec2(eye);
   const glm::dvec2 b = glm::dvec2(piece_hi) * spacing - glm::dvec2(eye);
-  const double horizontal = std::hypot(std::max(std::abs(a.x), std::abs(b.x)), std::max(std::abs(a.y), std::abs(b.y)));
+  const double fx = std::max(std::abs(a.x), std::abs(b.x)), fy = std::max(std::abs(a.y), std::abs(b.y));
+  const double horizontal = std::sqrt(fx * fx + fy * fy);
   const double drop = earth_radius_m > 0.0 ? horizontal * horizontal / earth_radius_m : 0.0;
   const double vertical = std::max(std::abs(z_hi - eye.z), std::abs(z_lo - drop - eye.z));
   const double window_m = tolerance_m + kWindowPerMetre * (horizontal + vertical);

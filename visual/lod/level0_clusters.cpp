@@ -88,6 +88,13 @@ int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const Box
   auto clear_of_square = [&](glm::ivec2 lo, glm::ivec2 hi) {
     return hi.x <= square_lo.x || lo.x >= square_hi.x || hi.y <= square_lo.y || lo.y >= square_hi.y;
   };
+  if (square_lo != split_lo_ || square_hi != split_hi_) {
+    split_lo_ = square_lo;
+    split_hi_ = square_hi;
+    split_first_.assign(clusters_.size(), kNotSplit);
+    split_count_.assign(clusters_.size(), 0);
+    pieces_.clear();
+  }
   int culled = 0;
   in_view_.clear();
   boxes_.clear();
@@ -126,15 +133,36 @@ int Level0Clusters::select(glm::ivec2 square_lo, glm::ivec2 square_hi, const Box
       (band_free ? *clear_of_band : outside).append(3 * c.first_triangle, 3 * c.triangles);
       continue;
     }
-    for (std::uint32_t t = c.first_triangle; t < c.first_triangle + c.triangles; ++t) {
-      const auto* idx = &mesh_.indices[3 * t];
-      const glm::ivec2 a = mesh_.samples[idx[0]], b = mesh_.samples[idx[1]], d = mesh_.samples[idx[2]];
-      const glm::ivec2 mn = glm::min(a, glm::min(b, d)), mx = glm::max(a, glm::max(b, d));
-      if (inside_square(mn, mx)) continue;
-      (clear_of_square(mn, mx) ? outside : crossing).append(3 * t, 3);
-    }
+    const std::uint32_t k = in_view_[v];
+    if (split_first_[k] == kNotSplit) split_crossing(k, square_lo, square_hi);
+    for (std::uint32_t p = split_first_[k]; p < split_first_[k] + split_count_[k]; ++p)
+      (pieces_[p].crossing ? crossing : outside).append(pieces_[p].first_index, pieces_[p].index_count);
   }
   return culled;
+}
+
+// A crossing cluster's triangles as runs of consecutive triangles of one
+// kind (wholly outside the square, or across its edge); those inside it are
+// left out. Appended in order, the runs merge as the triangles would.
+void Level0Clusters::split_crossing(std::uint32_t k, glm::ivec2 square_lo, glm::ivec2 square_hi) const {
+  const Cluster& c = clusters_[k];
+  split_first_[k] = std::uint32_t(pieces_.size());
+  for (std::uint32_t t = c.first_triangle; t < c.first_triangle + c.triangles; ++t) {
+    const auto* idx = &mesh_.indices[3 * t];
+    const glm::ivec2 a = mesh_.samples[idx[0]], b = mesh_.samples[idx[1]], d = mesh_.samples[idx[2]];
+    const glm::ivec2 mn = glm::min(a, glm::min(b, d)), mx = glm::max(a, glm::max(b, d));
+    if (mn.x >= square_lo.x && mn.y >= square_lo.y && mx.x <= square_hi.x && mx.y <= square_hi.y) continue;
+    const bool across = !(mx.x <= square_lo.x || mn.x >= square_hi.x || mx.y <= square_lo.y || mn.y >= square_hi.y);
+    if (pieces_.size() > split_first_[k]) {
+      Piece& last = pieces_.back();
+      if (last.crossing == across && last.first_index + last.index_count == 3 * t) {
+        last.index_count += 3;
+        continue;
+      }
+    }
+    pieces_.push_back({3 * t, 3, across});
+  }
+  split_count_[k] = std::uint32_t(pieces_.size()) - split_first_[k];
 }
 
 }  // namespace ig::lod

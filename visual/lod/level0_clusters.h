@@ -72,6 +72,17 @@ class Level0Clusters {
   glm::dvec2 spacing_;
   std::vector<Cluster> clusters_;
   std::vector<Group> groups_;
+  // The runs of each cluster that crosses Level1's square, kept while the
+  // square stays put (Level1 moves in whole samples, the view every frame).
+  struct Piece {
+    std::uint32_t first_index, index_count;
+    bool crossing;  // across the square's edge; else wholly outside it
+  };
+  void split_crossing(std::uint32_t k, glm::ivec2 square_lo, glm::ivec2 square_hi) const;
+  static constexpr std::uint32_t kNotSplit = ~0u;
+  mutable glm::ivec2 split_lo_{0}, split_hi_{-1};
+  mutable std::vector<std::uint32_t> split_first_, split_count_;  // per cluster: its pieces in pieces_
+  mutable std::vector<Piece> pieces_;
   // Per-frame scratch: clusters in view and their boxes.
   mutable std::vector<std::uint32_t> in_view_;
   mutable std::vector<HorizonCulling::Box> boxes_;

@@ -69,8 +69,8 @@ void lower_by_curvature(glm::dvec3& lo, glm::dvec3& hi, double earth_radius_m) {
   if (earth_radius_m <= 0.0) return;
   const double nx = std::max(lo.x, std::min(0.0, hi.x)), ny = std::max(lo.y, std::min(0.0, hi.y));
   const double fx = std::max(std::abs(lo.x), std::abs(hi.x)), fy = std::max(std::abs(lo.y), std::abs(hi.y));
-  hi.z -= terrain::curvature_drop(std::hypot(nx, ny), earth_radius_m);
-  lo.z -= terrain::curvature_drop(std::hypot(fx, fy), earth_radius_m);
+  hi.z -= terrain::curvature_drop_squared(nx * nx + ny * ny, earth_radius_m);
+  lo.z -= terrain::curvature_drop_squared(fx * fx + fy * fy, earth_radius_m);
 }
 }  // namespace
 

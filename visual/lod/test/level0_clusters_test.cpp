@@ -74,6 +74,28 @@ TEST(Level0Clusters, EveryTriangleInItsClassAgainstTheSquare) {
   }
 }
 
+// The crossing clusters' runs are kept while the square stays put: the same
+// square again (kept runs), another one and back (runs made anew), and a
+// fresh object give the same runs.
+TEST(Level0Clusters, RunsAreTheSameWhetherKeptOrMadeAnew) {
+  const auto hf = lod_checks::synthetic(257);
+  const auto mesh = ig::lod::z_ordered(ig::lod::build_level0_mesh(hf, {4096}));
+  const Level0Clusters clusters(mesh, {hf.spacing_x_m, hf.spacing_y_m}, 64);
+  const auto all = [](const glm::dvec3&, const glm::dvec3&) { return true; };
+  const glm::ivec2 lo{93, 90}, hi{151, 157};  // off the mesh's power-of-two edges
+  auto runs = [&](const Level0Clusters& c, glm::ivec2 a, glm::ivec2 b) {
+    IndexRuns outside, crossing;
+    c.select(a, b, all, outside, crossing);
+    return std::vector<std::vector<std::uint32_t>>{outside.first, outside.count, crossing.first, crossing.count};
+  };
+  const auto first = runs(clusters, lo, hi);
+  ASSERT_FALSE(first[2].empty()) << "the square should cross some triangles";
+  EXPECT_EQ(runs(clusters, lo, hi), first);
+  EXPECT_NE(runs(clusters, lo + 1, hi + 1), first);
+  EXPECT_EQ(runs(clusters, lo, hi), first);
+  EXPECT_EQ(runs(Level0Clusters(mesh, {hf.spacing_x_m, hf.spacing_y_m}, 64), lo, hi), first);
+}
+
 TEST(Level0Clusters, CullingKeepsEveryTriangleInTheVisibleRegionAndRunsAreMerged) {
   const auto hf = lod_checks::synthetic(257);
   const auto mesh = ig::lod::z_ordered(ig::lod::build_level0_mesh(hf, {8192}));
