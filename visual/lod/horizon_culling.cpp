@@ -38,22 +38,40 @@ void HorizonCulling::bucket_by_ring(std::vector<Order>& items, RingOf ring_of) {
   items.swap(sorted_);
 }
 
-HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int bins)
+HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, double bins_per_whole_cell, int bins)
     : floors_(std::move(floors)),
       spacing_(spacing_m),
+      bins_per_whole_cell_(bins_per_whole_cell),
       horizon_(size_t(std::max(bins, 4))),
       reach_(horizon_.size()) {}
+
+void HorizonCulling::build_floor_levels() {
+  floor_levels_.clear();
+  floor_levels_.push_back({floors_.nx, floors_.ny, floors_.cell_samples, {}, {}});  // its cells are floors_'s
+  while (floor_levels_.back().nx > 4 || floor_levels_.back().ny > 4) {
+    const Level& f = floor_levels_.back();
+    const bool first = floor_levels_.size() == 1;
+    const std::vector<float>& floor = first ? floors_.floor_m : f.floor_m;
+    const std::vector<float>& chord = first ? floors_.chord_samples : f.chord_samples;
+    Level c{(f.nx + 1) / 2, (f.ny + 1) / 2, 2 * f.cell_samples, {}, {}};
+    c.floor_m.assign(size_t(c.nx) * c.ny, std::numeric_limits<float>::infinity());
+    if (!chord.empty()) c.chord_samples.assign(c.floor_m.size(), 0.0f);
+    for (int j = 0; j < f.ny; ++j)
+      for (int i = 0; i < f.nx; ++i) {
+        const size_t to = size_t(j / 2) * c.nx + i / 2, from = size_t(j) * f.nx + i;
+        c.floor_m[to] = std::min(c.floor_m[to], floor[from]);
+        if (!chord.empty()) c.chord_samples[to] = std::max(c.chord_samples[to], chord[from]);
+      }
+    floor_levels_.push_back(std::move(c));
+  }
+  floor_levels_valid_ = true;
+}
 
 HorizonCulling::Extent HorizonCulling::extent_of(const glm::dvec2& eye, const glm::dvec2& lo,
                                                  const glm::dvec2& hi) const {
   const double dx0 = lo.x - eye.x, dx1 = hi.x - eye.x, dy0 = lo.y - eye.y, dy1 = hi.y - eye.y;
-  return extent_from_corners(dx0, dx1, dy0, dy1,
-                             {pseudo_angle(dx0, dy0), pseudo_angle(dx1, dy0), pseudo_angle(dx0, dy1),
-                              pseudo_angle(dx1, dy1)});
-}
-
-HorizonCulling::Extent HorizonCulling::extent_from_corners(double dx0, double dx1, double dy0, double dy1,
-                                                           const std::array<double, 4>& angle) const {
+  const std::array<double, 4> angle{pseudo_angle(dx0, dy0), pseudo_angle(dx1, dy0), pseudo_angle(dx0, dy1),
+                                    pseudo_angle(dx1, dy1)};
   const double nx = std::max({dx0, 0.0, -dx1}), ny = std::max({dy0, 0.0, -dy1});
   const double fx = std::max(std::abs(dx0), std::abs(dx1));
   const double fy = std::max(std::abs(dy0), std::abs(dy1));
@@ -133,6 +151,60 @@ bool HorizonCulling::under(const Extent& e, double slope) const {
   return each_bin(e.touch_lo, e.touch_hi, int(horizon_.size()), [&](size_t b) { return slope < horizon_[b]; });
 }
 
+// The cells a box's test may use, with their extents and floors as drawn. A
+// floor ending at distance `far` can change a box's test only where some box
+// spanning one of the bins it raises lies beyond it (reaches_beyond): a
+// floor is swept only before boxes beyond its far end.
+void HorizonCulling::gather_cells(const glm::dvec2& eye2, double earth_radius_m, double min_distance_m,
+                                  double farthest_box) {
+  cells_.clear();
+  cell_extent_.clear();
+  cell_floor_.clear();
+  if (!floor_levels_valid_) build_floor_levels();
+  // From the coarsest cells down: a cell that cannot matter from its nearest
+  // point holds none that can (a cell's directions and distances lie inside
+  // its parent's); one that spans few bins is swept whole, with the lowest
+  // floor under it; nearer ones are split into their four quarters.
+  const double bin_angle = 2.0 * M_PI / double(horizon_.size());
+  node_stack_.clear();
+  const Level& top = floor_levels_.back();
+  for (int j = top.ny - 1; j >= 0; --j)
+    for (int i = top.nx - 1; i >= 0; --i) node_stack_.push_back({int(floor_levels_.size()) - 1, i, j});
+  while (!node_stack_.empty()) {
+    const auto [level, i, j] = node_stack_.back();
+    node_stack_.pop_back();
+    const Level& l = floor_levels_[size_t(level)];
+    const int s = l.cell_samples;
+    const double x0 = std::min(i * s, floors_.grid_cells_x) * spacing_.x;
+    const double x1 = std::min((i + 1) * s, floors_.grid_cells_x) * spacing_.x;
+    const double y0 = std::min(j * s, floors_.grid_cells_y) * spacing_.y;
+    const double y1 = std::min((j + 1) * s, floors_.grid_cells_y) * spacing_.y;
+    const Extent e = extent_of(eye2, {x0, y0}, {x1, y1});
+    if (e.near > farthest_box) continue;
+    if (e.near > 0.0 && !reaches_beyond(e.inside_lo, e.inside_hi, e.near)) continue;
+    const bool whole = e.near >= min_distance_m && e.far <= farthest_box &&
+                       std::max(x1 - x0, y1 - y0) <= bins_per_whole_cell_ * bin_angle * e.near;
+    if (level > 0 && !whole) {
+      const Level& finer = floor_levels_[size_t(level - 1)];
+      for (int dj = 1; dj >= 0; --dj)
+        for (int di = 1; di >= 0; --di)
+          if (2 * i + di < finer.nx && 2 * j + dj < finer.ny) node_stack_.push_back({level - 1, 2 * i + di, 2 * j + dj});
+      continue;
+    }
+    if (e.near < min_distance_m || e.far > farthest_box) continue;
+    if (!reaches_beyond(e.inside_lo, e.inside_hi, e.far)) continue;
+    cells_.push_back({e.far, std::uint32_t(cell_extent_.size())});
+    cell_extent_.push_back(e);
+    const size_t at = size_t(j) * l.nx + i;
+    const std::vector<float>& chord = level == 0 ? floors_.chord_samples : l.chord_samples;
+    // The chord sag of the triangles over the cell (terrain_floors.h).
+    const double sag = chord.empty() || earth_radius_m <= 0.0
+                           ? 0.0
+                           : std::pow(chord[at] * std::max(spacing_.x, spacing_.y), 2) / (8.0 * earth_radius_m);
+    cell_floor_.push_back((level == 0 ? floors_.floor_m : l.floor_m)[at] - sag);
+  }
+}
+
 int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m,
                                 const std::vector<Box>& boxes, std::vector<std::uint8_t>& hidden) {
   hidden.assign(boxes.size(), 0);
@@ -157,7 +229,7 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
       return true;
     });
   }
-  // Per run of kCoarse bins the farthest reach in it, for matters().
+  // Per run of kCoarse bins the farthest reach in it, for reaches_beyond().
   coarse_reach_.assign((size_t(bins) + kCoarse - 1) / kCoarse, -1.0);
   for (int b = 0; b < bins; ++b) coarse_reach_[size_t(b / kCoarse)] = std::max(coarse_reach_[size_t(b / kCoarse)], reach_[size_t(b)]);
   // Distances in rings of this width: a floor is swept before a box when
@@ -165,60 +237,10 @@ int HorizonCulling::mark_hidden(const glm::dvec3& eye, double earth_radius_m, do
   const double ring = std::max(farthest_box, 1.0) / kRings;
   auto ring_of = [&](double d) { return std::min(int(d / ring), kRings); };
   bucket_by_ring(box_order_, ring_of);
-  // Whether a floor ending at distance `far` and raising the bins of
-  // [lo, hi) can change any box's test: some box spanning one of those bins
-  // lies beyond it (a floor is swept only before boxes beyond its far end).
-  auto matters = [&](const Extent& e, double far) { return reaches_beyond(e.inside_lo, e.inside_hi, far); };
-
   // Floors in order of their farthest point: a floor is used only for boxes
   // wholly beyond it, so where a line passes under it, that is in front of
   // the box. Floors beyond every box, or in no box's directions, cannot matter.
-  cells_.clear();
-  cell_extent_.clear();
-  cell_floor_.clear();
-  const int s = floors_.cell_samples;
-  auto cell_x = [&](int i) { return std::min(i * s, floors_.grid_cells_x) * spacing_.x; };
-  auto cell_y = [&](int j) { return std::min(j * s, floors_.grid_cells_y) * spacing_.y; };
-  // Cells in groups of kGroup x kGroup: a group that cannot matter from its
-  // nearest point holds no cell that can (a cell's directions and distances
-  // lie inside its group's), so most of the grid costs one test per group.
-  constexpr int kGroup = 4;
-  for (int gj = 0; gj < floors_.ny; gj += kGroup) {
-    const int gj1 = std::min(gj + kGroup, floors_.ny);
-    const double gy0 = cell_y(gj), gy1 = cell_y(gj1);
-    if (std::max({gy0 - eye.y, 0.0, eye.y - gy1}) > farthest_box) continue;
-    for (int gi = 0; gi < floors_.nx; gi += kGroup) {
-      const int gi1 = std::min(gi + kGroup, floors_.nx);
-      const Extent g = extent_of(eye2, {cell_x(gi), gy0}, {cell_x(gi1), gy1});
-      if (g.near > farthest_box) continue;
-      if (g.near > 0.0 && !matters(g, g.near)) continue;
-      // The group's cell corners relative to the eye and their directions,
-      // each computed once for the up to four cells that share it.
-      std::array<double, kGroup + 1> dx{}, dy{};
-      std::array<double, (kGroup + 1) * (kGroup + 1)> angle{};
-      for (int i = gi; i <= gi1; ++i) dx[size_t(i - gi)] = cell_x(i) - eye.x;
-      for (int j = gj; j <= gj1; ++j) dy[size_t(j - gj)] = cell_y(j) - eye.y;
-      for (int j = 0; j <= gj1 - gj; ++j)
-        for (int i = 0; i <= gi1 - gi; ++i)
-          angle[size_t(j * (kGroup + 1) + i)] = pseudo_angle(dx[size_t(i)], dy[size_t(j)]);
-      for (int j = gj; j < gj1; ++j) {
-        const size_t r = size_t(j - gj);
-        for (int i = gi; i < gi1; ++i) {
-          const size_t c = size_t(i - gi);
-          const auto idx = std::uint32_t(j * floors_.nx + i);
-          const Extent e = extent_from_corners(
-              dx[c], dx[c + 1], dy[r], dy[r + 1],
-              {angle[r * (kGroup + 1) + c], angle[r * (kGroup + 1) + c + 1], angle[(r + 1) * (kGroup + 1) + c],
-               angle[(r + 1) * (kGroup + 1) + c + 1]});
-          if (e.near < min_distance_m || e.far > farthest_box) continue;
-          if (!matters(e, e.far)) continue;
-          cells_.push_back({e.far, std::uint32_t(cell_extent_.size())});
-          cell_extent_.push_back(e);
-          cell_floor_.push_back(floors_.floor_m[idx]);
-        }
-      }
-    }
-  }
+  gather_cells(eye2, earth_radius_m, min_distance_m, farthest_box);
   bucket_by_ring(cells_, ring_of);
 
   std::fill(horizon_.begin(), horizon_.end(), -std::numeric_limits<double>::infinity());

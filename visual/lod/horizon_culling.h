@@ -30,8 +30,12 @@ namespace ig::lod {
 
 class HorizonCulling {
  public:
-  // spacing_m: metres per DEM sample in x and y; bins: azimuth resolution.
-  HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, int bins = 2048);
+  // spacing_m: metres per DEM sample in x and y. Far from the eye the floors
+  // are swept in coarser cells (each the lowest of the 2 x 2 below it): a
+  // cell is swept whole where its width spans at most bins_per_whole_cell
+  // bins, so a larger value sweeps fewer cells and hides a little less.
+  // bins: azimuth resolution.
+  HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, double bins_per_whole_cell = 32.0, int bins = 2048);
 
   // Boxes in terrain-local metres, heights as in the DEM (before the Earth
   // curvature's drop, which is applied here as the renderer does).
@@ -44,7 +48,11 @@ class HorizonCulling {
   int mark_hidden(const glm::dvec3& eye, double earth_radius_m, double min_distance_m, const std::vector<Box>& boxes,
                   std::vector<std::uint8_t>& hidden);
   // The floors in use, for occluders that change per frame (lod/drawn_surface_occlusion.h).
-  TerrainFloors& floors() { return floors_; }
+  TerrainFloors& floors() {
+    floor_levels_valid_ = false;
+    return floors_;
+  }
+  const TerrainFloors& floors() const { return floors_; }
 
  private:
   // A rectangle's horizontal distances from the eye and its directions as
@@ -55,17 +63,27 @@ class HorizonCulling {
     long touch_lo, touch_hi, inside_lo, inside_hi;
   };
   Extent extent_of(const glm::dvec2& eye, const glm::dvec2& lo, const glm::dvec2& hi) const;
-  // The same from the rectangle's sides relative to the eye (x: dx0 < dx1,
-  // y: dy0 < dy1) and its corners' pseudo-angles, (x0, y0), (x1, y0),
-  // (x0, y1), (x1, y1): neighbouring cells share corners.
-  Extent extent_from_corners(double dx0, double dx1, double dy0, double dy1, const std::array<double, 4>& angle) const;
   void raise(const Extent& e, double slope);           // bins wholly inside e's directions
   bool under(const Extent& e, double slope) const;     // every bin e's directions touch
   // Some bin of k0..k1 (unwrapped) has a reach beyond `far`.
   bool reaches_beyond(long k0, long k1, double far) const;
+  // Fills cells_, cell_extent_ and cell_floor_ for this frame's sweep.
+  void gather_cells(const glm::dvec2& eye2, double earth_radius_m, double min_distance_m, double farthest_box);
 
   TerrainFloors floors_;
+  // Coarser floors, each cell the lowest of the 2 x 2 below it: far from the
+  // eye a cell of the finest grid spans few bins, and one coarse cell raises
+  // them at a quarter of the cost. floor_levels_[0] is floors_'s grid (its
+  // floors are floors_'s); rebuilt after floors() was handed out for writing.
+  struct Level {
+    int nx, ny, cell_samples;
+    std::vector<float> floor_m, chord_samples;  // as TerrainFloors's
+  };
+  std::vector<Level> floor_levels_;
+  bool floor_levels_valid_ = false;
+  void build_floor_levels();
   glm::dvec2 spacing_;
+  double bins_per_whole_cell_;
   std::vector<double> horizon_;  // per bin: a line under this slope passes under some floor swept
   std::vector<double> reach_;    // per bin: the nearest distance of the farthest box spanning it
   static constexpr int kCoarse = 32;
@@ -76,6 +94,10 @@ class HorizonCulling {
     bool operator<(const Order& o) const { return distance < o.distance; }
   };
   std::vector<Order> cells_, box_order_, sorted_;  // per-frame scratch
+  struct Node {
+    int level, i, j;  // a cell of floor_levels_[level]
+  };
+  std::vector<Node> node_stack_;
   std::vector<std::uint32_t> ring_start_;
   template <class RingOf>
   void bucket_by_ring(std::vector<Order>& items, RingOf ring_of);

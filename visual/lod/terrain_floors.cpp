@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include <glm/common.hpp>
@@ -46,6 +47,7 @@ TerrainFloors terrain_floors(const Level0Mesh& level0, const terrain::HeightPyra
   f.grid_cells_x = pyramid.cells_x();
   f.grid_cells_y = pyramid.cells_y();
   f.floor_m.resize(size_t(f.nx) * f.ny);
+  f.chord_samples.assign(size_t(f.nx) * f.ny, float(std::sqrt(2.0)));  // the DEM's grid cells
   for (int j = 0; j < f.ny; ++j)
     for (int i = 0; i < f.nx; ++i) f.floor_m[size_t(j) * f.nx + i] = pyramid.node(cell_level, i, j).lo;
 
@@ -65,8 +67,11 @@ TerrainFloors terrain_floors(const Level0Mesh& level0, const terrain::HeightPyra
     // Cells the triangle's box touches (a vertex on a cell edge touches both sides).
     const int i0 = std::max(0, (lo.x - 1) / s), i1 = std::min(f.nx - 1, hi.x / s);
     const int j0 = std::max(0, (lo.y - 1) / s), j1 = std::min(f.ny - 1, hi.y / s);
+    const auto chord = float(std::hypot(double(hi.x - lo.x), double(hi.y - lo.y)));
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) {
+        float& c = f.chord_samples[size_t(j) * f.nx + i];
+        c = std::max(c, chord);
         const double x0 = i * s, x1 = std::min((i + 1) * s, cells_x), y0 = j * s, y1 = std::min((j + 1) * s, cells_y);
         poly.assign(tri.begin(), tri.end());
         clip(poly, [&](const Corner& c) { return c.x - x0; }, scratch);

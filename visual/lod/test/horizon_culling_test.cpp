@@ -57,6 +57,30 @@ TEST(TerrainFloors, NeverAboveTheDemNorLevel0) {
   EXPECT_LT(tightest, 5.0) << "floors far below everything: culling would never help";
 }
 
+// Every Level0 triangle's chord (its box's diagonal, in samples) is at most
+// the chord of each cell its box touches, so the sag bound covers it.
+TEST(TerrainFloors, ChordCoversEveryTriangleOverTheCell) {
+  const auto hf = lod_checks::synthetic(257, 7);
+  const ig::terrain::HeightPyramid pyramid(hf);
+  const auto level0 = ig::lod::build_level0_mesh(hf, {2048});
+  const auto floors = ig::lod::terrain_floors(level0, pyramid, 4);
+  ASSERT_EQ(floors.chord_samples.size(), floors.floor_m.size());
+  float longest = 0.0f;
+  for (size_t t = 0; t + 2 < level0.indices.size(); t += 3) {
+    glm::ivec2 lo(1 << 30), hi(-(1 << 30));
+    for (int k = 0; k < 3; ++k) {
+      lo = glm::min(lo, level0.samples[level0.indices[t + k]]);
+      hi = glm::max(hi, level0.samples[level0.indices[t + k]]);
+    }
+    const auto chord = float(std::hypot(double(hi.x - lo.x), double(hi.y - lo.y)));
+    longest = std::max(longest, chord);
+    for (int j = lo.y / 16; j <= std::min(hi.y / 16, floors.ny - 1); ++j)
+      for (int i = lo.x / 16; i <= std::min(hi.x / 16, floors.nx - 1); ++i)
+        ASSERT_GE(floors.chord_samples[size_t(j) * floors.nx + i], chord) << "cell " << i << ", " << j;
+  }
+  EXPECT_GT(longest, 16.0f) << "a 2048-triangle Level0 has triangles larger than a cell";
+}
+
 // A 2 km-high wall across a flat plain: what is behind and below its crest
 // is hidden, what is in front of it or above the line over the crest is not.
 TEST(HorizonCulling, WallHidesWhatIsBehindIt) {
@@ -80,12 +104,15 @@ TEST(HorizonCulling, WallHidesWhatIsBehindIt) {
 // Random eyes and cluster-sized boxes over a rough terrain: every point of
 // every hidden box is behind the terrain (the exact ray cast from the eye
 // hits before it), and the culling hides a good share of them.
-void check_hidden_boxes_are_hidden(double earth_radius_m) {
+// bins_per_whole_cell: how soon the sweep takes coarser cells (lowest of 2 x 2);
+// min_share: the share of boxes hidden at least.
+void check_hidden_boxes_are_hidden(double earth_radius_m, double bins_per_whole_cell = 32.0, double min_share = 0.1) {
   const auto hf = lod_checks::synthetic(513, 9);
   const ig::terrain::HeightPyramid pyramid(hf);
   const auto level0 = ig::lod::build_level0_mesh(hf, {8192});
   const ig::lod::Level0HeightQuery level0_height(level0, hf.width, hf.height);
-  HorizonCulling culling(ig::lod::terrain_floors(level0, pyramid, 4), {hf.spacing_x_m, hf.spacing_y_m});
+  HorizonCulling culling(ig::lod::terrain_floors(level0, pyramid, 4), {hf.spacing_x_m, hf.spacing_y_m},
+                         bins_per_whole_cell);
   std::mt19937 rng(earth_radius_m > 0 ? 4 : 3);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double side = (hf.width - 1) * hf.spacing_x_m;
@@ -128,12 +155,18 @@ void check_hidden_boxes_are_hidden(double earth_radius_m) {
     }
   }
   std::printf("%lld of %lld boxes hidden, %lld of their points checked\n", boxes_hidden, boxes_total, points_checked);
-  EXPECT_GT(boxes_hidden, boxes_total / 10) << "the culling should hide a share of boxes from low eyes";
+  EXPECT_GT(double(boxes_hidden), min_share * double(boxes_total)) << "the culling should hide a share of boxes from low eyes";
 }
 
 TEST(HorizonCulling, HiddenBoxesHaveNoVisiblePoint) { check_hidden_boxes_are_hidden(0.0); }
 TEST(HorizonCulling, HiddenBoxesHaveNoVisiblePointWithEarthCurvature) {
   check_hidden_boxes_are_hidden(30000.0);  // an exaggerated curve: 30 km radius
+}
+// Only the finest cells; the coarsest cells wherever the eye is not over them
+// (lower floors, so fewer boxes are hidden, but still some).
+TEST(HorizonCulling, HiddenBoxesHaveNoVisiblePointWithFinestCellsOnly) { check_hidden_boxes_are_hidden(0.0, 0.0); }
+TEST(HorizonCulling, HiddenBoxesHaveNoVisiblePointWithCoarseCellsFarOut) {
+  check_hidden_boxes_are_hidden(30000.0, 1e9, 0.005);
 }
 
 }  // namespace
