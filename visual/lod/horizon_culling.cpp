@@ -45,24 +45,37 @@ HorizonCulling::HorizonCulling(TerrainFloors floors, glm::dvec2 spacing_m, doubl
       horizon_(size_t(std::max(bins, 4))),
       reach_(horizon_.size()) {}
 
+const std::vector<float>& HorizonCulling::level_floors(size_t level) const {
+  return level == 0 ? floors_.floor_m : floor_levels_[level].floor_m;
+}
+
+const std::vector<float>& HorizonCulling::level_chords(size_t level) const {
+  return level == 0 ? floors_.chord_samples : floor_levels_[level].chord_samples;
+}
+
+// Rebuilt in place: the baselines' occluders change every frame, and the
+// levels keep their sizes, so no frame allocates.
 void HorizonCulling::build_floor_levels() {
-  floor_levels_.clear();
-  floor_levels_.push_back({floors_.nx, floors_.ny, floors_.cell_samples, {}, {}});  // its cells are floors_'s
-  while (floor_levels_.back().nx > 4 || floor_levels_.back().ny > 4) {
-    const Level& f = floor_levels_.back();
-    const bool first = floor_levels_.size() == 1;
-    const std::vector<float>& floor = first ? floors_.floor_m : f.floor_m;
-    const std::vector<float>& chord = first ? floors_.chord_samples : f.chord_samples;
-    Level c{(f.nx + 1) / 2, (f.ny + 1) / 2, 2 * f.cell_samples, {}, {}};
+  size_t count = 1;
+  for (int nx = floors_.nx, ny = floors_.ny; nx > 4 || ny > 4; nx = (nx + 1) / 2, ny = (ny + 1) / 2) ++count;
+  floor_levels_.resize(count);
+  floor_levels_[0] = {floors_.nx, floors_.ny, floors_.cell_samples, {}, {}};  // its cells are floors_'s
+  for (size_t k = 1; k < count; ++k) {
+    const Level& f = floor_levels_[k - 1];
+    const std::vector<float>& floor = level_floors(k - 1);
+    const std::vector<float>& chord = level_chords(k - 1);
+    Level& c = floor_levels_[k];
+    c.nx = (f.nx + 1) / 2;
+    c.ny = (f.ny + 1) / 2;
+    c.cell_samples = 2 * f.cell_samples;
     c.floor_m.assign(size_t(c.nx) * c.ny, std::numeric_limits<float>::infinity());
-    if (!chord.empty()) c.chord_samples.assign(c.floor_m.size(), 0.0f);
+    c.chord_samples.assign(chord.empty() ? 0 : c.floor_m.size(), 0.0f);
     for (int j = 0; j < f.ny; ++j)
       for (int i = 0; i < f.nx; ++i) {
         const size_t to = size_t(j / 2) * c.nx + i / 2, from = size_t(j) * f.nx + i;
         c.floor_m[to] = std::min(c.floor_m[to], floor[from]);
         if (!chord.empty()) c.chord_samples[to] = std::max(c.chord_samples[to], chord[from]);
       }
-    floor_levels_.push_back(std::move(c));
   }
   floor_levels_valid_ = true;
 }
@@ -196,12 +209,11 @@ void HorizonCulling::gather_cells(const glm::dvec2& eye2, double earth_radius_m,
     cells_.push_back({e.far, std::uint32_t(cell_extent_.size())});
     cell_extent_.push_back(e);
     const size_t at = size_t(j) * l.nx + i;
-    const std::vector<float>& chord = level == 0 ? floors_.chord_samples : l.chord_samples;
+    const std::vector<float>& chord = level_chords(size_t(level));
     // The chord sag of the triangles over the cell (terrain_floors.h).
-    const double sag = chord.empty() || earth_radius_m <= 0.0
-                           ? 0.0
-                           : std::pow(chord[at] * std::max(spacing_.x, spacing_.y), 2) / (8.0 * earth_radius_m);
-    cell_floor_.push_back((level == 0 ? floors_.floor_m : l.floor_m)[at] - sag);
+    const double chord_m = chord.empty() ? 0.0 : chord[at] * std::max(spacing_.x, spacing_.y);
+    const double sag = earth_radius_m > 0.0 ? chord_m * chord_m / (8.0 * earth_radius_m) : 0.0;
+    cell_floor_.push_back(level_floors(size_t(level))[at] - sag);
   }
 }
 

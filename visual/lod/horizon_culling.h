@@ -82,6 +82,8 @@ class HorizonCulling {
   std::vector<Level> floor_levels_;
   bool floor_levels_valid_ = false;
   void build_floor_levels();
+  const std::vector<float>& level_floors(size_t level) const;  // floors_'s at level 0
+  const std::vector<float>& level_chords(size_t level) const;
   glm::dvec2 spacing_;
   double bins_per_whole_cell_;
   std::vector<double> horizon_;  // per bin: a line under this slope passes under some floor swept

@@ -20,8 +20,8 @@ struct TerrainFloors {
   int nx = 0, ny = 0;    // cells in x and y
   int grid_cells_x = 0, grid_cells_y = 0;  // the DEM's grid cells (width-1, height-1): the last row and column of cells may be narrower
   std::vector<float> floor_m;
-  // Per cell (empty: none over a grid cell): the longest diagonal, in
-  // samples, of a drawn triangle's box over it. The renderer lowers each
+  // Per cell: the longest diagonal, in samples, of a drawn triangle's box
+  // over it (empty: the floors take no sag into account). The renderer lowers each
   // vertex by the Earth's curvature and interpolates between them, so a
   // triangle of chord L sags under the curved surface by up to L^2 / 8R.
   std::vector<float> chord_samples;
